@@ -1,0 +1,130 @@
+// A tape: straight-line code over double slots, the contract between the compiler (which
+// produces it from the expression DAG) and the evaluators (point, batch, interval, gradient).
+// A tape is immutable once built and is shared between threads; evaluators keep their scratch
+// per thread.
+#pragma once
+
+#include "Language/function_table.h"
+#include "Language/source_location.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace frep
+{
+
+/// Operations. Unless stated, operands are slots a, b, c and the result goes to `out`.
+/// Booleans are the doubles 1.0 (true) and 0.0 (false). "HyperFun" ops reproduce exactly what
+/// the original interpreter computes (same operations in the same order, bit for bit).
+enum class Opcode : std::uint8_t
+{
+  // leaves
+  Const, ///< out = imm
+  Input, ///< out = inputs[index]
+
+  // IEEE arithmetic
+  Add, Sub, Mul, Div, ///< a op b (Div unchecked: checks are separate ErrorIf instructions)
+  Neg,                ///< -a
+  Square,             ///< a * a
+  Abs,                ///< fabs(a)
+
+  // C library, no domain checks (the compiler emits ErrorIf where HyperFun checks)
+  Sqrt, Exp, Log, Log10, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh,
+  Atan2, ///< atan2(a, b)
+  Pow,   ///< C pow(a, b)
+  Floor, Ceil, Trunc,
+  Frac,  ///< fractional part as C modf computes it (keeps the sign; 0 for infinities)
+  Fmod,  ///< fmod(a, b)
+
+  // HyperFun semantics
+  HfPow,     ///< a ^ b by the original's rules, value part (errors via ErrorIf)
+  HfPowInt,  ///< a ^ index for a constant integral exponent `index` (may be negative)
+  HfMod,     ///< fmod(HF_round(a), HF_round(b))
+  HfRound,   ///< HF_round(a): round half up (array indices)
+  Max, Min,  ///< as the original's builtins compute them
+  Union,     ///< a + b + sqrt(a*a + b*b)
+  Intersect, ///< a + b - sqrt(a*a + b*b)   (a \ b = Intersect(a, -b) bit for bit)
+
+  // comparisons and logic (results 1.0 / 0.0)
+  Eq, Ne,         ///< |a - b| < 1e-6 ; |a - b| >= 1e-6
+  Lt, Le, Gt, Ge, ///< exact
+  Truthy,         ///< |a| >= 1e-6
+  And, Or,        ///< truthiness of a and b
+  Not,            ///< !(|a| >= 1e-6)
+  Select,         ///< a != 0 ? b : c   (a is a boolean slot)
+
+  // run-time errors
+  ErrorIf, ///< if a != 0 and the point has no error yet: error = index (1-based into errors)
+
+  // opaque: a library function without a generic form, or a whole interpreted model
+  Call ///< calls[index]: reads its input slots, writes its output slots, may set the error
+};
+
+/// Returns the mnemonic, for dumps and tests.
+const char* opcode_name(Opcode op);
+
+/// One instruction. Slots are indices into the evaluator's register file.
+struct Instruction
+{
+  Opcode op = Opcode::Const;
+  std::uint32_t out = 0;
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+  std::uint32_t c = 0;
+  std::int32_t index = 0; ///< Input index, HfPowInt exponent, ErrorIf error id, Call site
+  double imm = 0;         ///< Const value
+};
+
+/// A run-time error the tape can raise, with the source position the original reports.
+struct TapeError
+{
+  std::string message;
+  SourceLocation location;
+};
+
+/// Interface of an opaque function evaluated one point at a time. It is shared by threads:
+/// evaluate() is const; per-thread state lives in a Scratch the evaluator creates once.
+class OpaqueFunction
+{
+public:
+  struct Scratch
+  {
+    virtual ~Scratch() = default;
+  };
+
+  virtual ~OpaqueFunction() = default;
+  /// Per-evaluator scratch (may be null when the function needs none).
+  virtual std::unique_ptr<Scratch> make_scratch() const { return nullptr; }
+  /// Computes outputs from inputs; returns 0 on success or a 1-based error id of the tape.
+  virtual int evaluate(Scratch* scratch, std::span<const double> inputs,
+    std::span<double> outputs) const = 0;
+};
+
+struct CallSite
+{
+  std::shared_ptr<const OpaqueFunction> function;
+  std::vector<std::uint32_t> inputs;  ///< slots read
+  std::vector<std::uint32_t> outputs; ///< slots written
+};
+
+/// Straight-line program: inputs -> outputs. Output 0 is the object's value F; outputs
+/// 1..s_dim are s[1..s_dim] after evaluation. A point whose evaluation raised an error has
+/// error id > 0 and its outputs are meaningless (the evaluators return NaN for them).
+struct Tape
+{
+  std::vector<Instruction> code;
+  std::uint32_t slot_count = 0;
+  std::uint32_t input_count = 0;           ///< free coordinates, in Input index order
+  std::vector<std::uint32_t> outputs;      ///< output slots (value, s[1..])
+  std::vector<TapeError> errors;           ///< errors[id - 1]
+  std::vector<CallSite> calls;
+  bool can_fail = false;                   ///< any ErrorIf or Call present
+
+  /// Human-readable listing, one instruction per line.
+  std::string dump() const;
+};
+
+} // namespace frep

@@ -1,0 +1,49 @@
+// Evaluates a tape over many points: blocks of lanes processed instruction by instruction
+// (loops the compiler vectorises), blocks distributed over worker threads. Results are
+// bit-identical to PointEvaluator.
+#pragma once
+
+#include "Compiler/tape.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace frep
+{
+
+class ThreadPool;
+
+struct BatchOptions
+{
+  /// Worker threads; 0 = std::thread::hardware_concurrency(). 1 = evaluate on the caller.
+  int threads = 0;
+  /// Points per block (lanes); the register file of one block stays in cache.
+  int block_size = 256;
+};
+
+class BatchEvaluator
+{
+public:
+  explicit BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOptions& options = {});
+  ~BatchEvaluator();
+  BatchEvaluator(const BatchEvaluator&) = delete;
+  BatchEvaluator& operator=(const BatchEvaluator&) = delete;
+
+  const Tape& tape() const;
+
+  /// Structure-of-arrays evaluation of `count` points: inputs[k][i] is input k of point i
+  /// (inputs.size() == tape().input_count). values[i] = F, or NaN where the point raised a
+  /// run-time error; errors (optional) receive the error id per point (0 = none);
+  /// attributes (optional) receive s[j] of point i at attributes[j][i] (j < outputs-1).
+  /// Returns the number of points that raised an error.
+  std::size_t evaluate(std::span<const double* const> inputs, std::size_t count, double* values,
+    std::uint32_t* errors = nullptr, std::span<double* const> attributes = {});
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace frep

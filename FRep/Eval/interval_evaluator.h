@@ -1,0 +1,36 @@
+// Conservative interval evaluation of a tape over a box: the result encloses F at every point of
+// the box (never wrong; functions without a tight rule return the whole real line). Used to
+// cull boxes that are certainly inside or outside. R-functions use their monotonicity in each
+// argument (tight), not naive interval arithmetic on the expanded formula.
+#pragma once
+
+#include "Compiler/tape.h"
+#include "Eval/interval.h"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace frep
+{
+
+struct IntervalResult
+{
+  Interval value;          ///< encloses F over the box (where no error occurs)
+  bool may_fail = false;   ///< some point of the box may raise a run-time error
+};
+
+class IntervalEvaluator
+{
+public:
+  explicit IntervalEvaluator(std::shared_ptr<const Tape> tape);
+
+  /// Encloses F over the box given by one interval per tape input.
+  IntervalResult evaluate(std::span<const Interval> box);
+
+private:
+  std::shared_ptr<const Tape> tape_;
+  std::vector<Interval> slots_;
+};
+
+} // namespace frep

@@ -1,0 +1,40 @@
+// The HyperFun parser: text -> resolved AST, or every diagnostic found.
+#pragma once
+
+#include "ast.h"
+#include "diagnostic.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frep
+{
+
+struct ParseOptions
+{
+  /// Accept CR as whitespace (a CRLF file). The original rejects it on Unix; we accept it by
+  /// default (a documented deviation). false reproduces the original.
+  bool accept_carriage_return = true;
+  /// Deepest nesting of expressions/conditions/statements before the parser refuses the file
+  /// with a clear error (protects every recursive pass from stack overflow).
+  int max_nesting_depth = 200;
+};
+
+struct ParseResult
+{
+  /// Set when the text parsed without error (it may hold zero objects: "parse none").
+  std::shared_ptr<const ast::Program> program;
+  /// Every error found; the first is the one the original reports (same line, and the same
+  /// column and message wherever we can match them). Empty when program is set.
+  std::vector<Diagnostic> diagnostics;
+
+  bool ok() const { return program != nullptr; }
+};
+
+/// Parses a whole file. `file_name` is used in diagnostics only.
+ParseResult parse_program(std::string_view text, std::string file_name,
+  const ParseOptions& options = {});
+
+} // namespace frep

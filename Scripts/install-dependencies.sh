@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package FRepKit builds, tests and runs with, in one apt-get line.
+# The first block is the stack checked in a fresh debootstrap chroot (../shared/DESIGN.md,
+# "The stack on Debian 12"): ParaView 5.11 and its bundled VTK, Qt5, OpenImageIO, ffmpeg, Xvfb.
+# The second block is what the engine, the tools and the tests add.
+# Runs apt as root directly, or through sudo when the caller is not root.
+set -euo pipefail
+
+packages=(
+  # ParaView / VTK / Qt / media stack (DESIGN.md)
+  paraview paraview-dev python3-paraview
+  qtbase5-dev libqt5opengl5-dev libqt5svg5-dev qttools5-dev qtxmlpatterns5-dev-tools
+  libopenimageio-dev openimageio-tools libopencv-core-dev libsndfile1-dev ffmpeg xvfb xauth
+  libutfcpp-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libopenmpi-dev
+  liblz4-dev libdouble-conversion-dev libtheora-dev libglew-dev libtiff-dev libfreetype-dev
+  libpng-dev libjpeg-dev libx11-dev libgl-dev libexpat1-dev zlib1g-dev liblzma-dev
+  # toolchain, engine, command line, tests and benchmarks
+  build-essential cmake pkg-config git
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+if [ "$(id -u)" -eq 0 ]; then
+  run_as_root=()
+else
+  run_as_root=(sudo)
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+"${run_as_root[@]}" apt-get update
+"${run_as_root[@]}" apt-get install -y --no-install-recommends "${packages[@]}"

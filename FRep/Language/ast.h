@@ -82,7 +82,11 @@ struct ElementExpr
 {
   ArrayName array;
   ExprPtr index;
-  SourceLocation index_end; ///< last token of the index expression ("Array index out of range")
+  /// Unused by the interpreter: for a READ the original reports "Array index out of range" at
+  /// the position of the first instruction of the index expression's postfix code (its leftmost
+  /// innermost operand: `v[k+1]` -> k, `v[x[1]]` -> 1), which the interpreter derives from the
+  /// index expression itself.
+  SourceLocation index_end;
 };
 
 struct UnaryExpr
@@ -137,6 +141,11 @@ struct ObjectCallExpr
   ArrayName x;
   ArrayName a;
   std::optional<ArrayName> s;
+  /// The closing ')'. When s is omitted the original attaches this position to its implicit
+  /// third argument, so it is where "Some items of array are unassigned" is reported for an
+  /// a[] argument with unassigned items (and the position of an out-of-range index whose
+  /// expression starts with such a call).
+  SourceLocation close_paren;
 };
 
 /// An expression node. `location` is the position the original attaches to the node's
@@ -165,6 +174,9 @@ struct AssignElement
 {
   ArrayName array; ///< Local or S
   ExprPtr index;
+  /// The FIRST token of the index expression, an opening parenthesis included: the original
+  /// reports "Array index out of range" for a WRITE there (`v[x[1]] = 9;` -> x; `v[(k)]` -> the
+  /// '('). (Despite the name; kept for compatibility.)
   SourceLocation index_end;
   ExprPtr value;
 };

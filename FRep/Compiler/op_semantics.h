@@ -75,6 +75,18 @@ inline double hf_pow_repeated(double b, int n, bool negative)
   for (int i = 0; i < n; ++i)
   {
     v *= b;
+    // Once v is 0, inf or NaN, or when |b| = 1, every further multiplication keeps |v| and only
+    // flips the sign when b < 0 (a NaN keeps its bits): finish by parity instead of looping up
+    // to 2^31 times. Bit-identical to the full loop.
+    if (v == 0.0 || std::isinf(v) || std::isnan(v) || std::fabs(b) == 1.0)
+    {
+      const int remaining = n - 1 - i;
+      if (!std::isnan(v) && std::signbit(b) && remaining % 2 == 1)
+      {
+        v = -v;
+      }
+      break;
+    }
   }
   return negative ? 1 / v : v;
 }

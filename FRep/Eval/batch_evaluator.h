@@ -21,6 +21,12 @@ struct BatchOptions
   int threads = 0;
   /// Points per block (lanes); the register file of one block stays in cache.
   int block_size = 256;
+  /// A pool to run on instead of one of the evaluator's own (then `threads` is ignored). Several
+  /// evaluators may share a pool; their evaluate() calls are then serialised by it.
+  std::shared_ptr<ThreadPool> pool;
+  /// Use the AVX2 lane loops when the CPU has AVX2 (results are identical either way; false
+  /// forces the SSE2 baseline, for tests and measurements).
+  bool wide_simd = true;
 };
 
 class BatchEvaluator
@@ -33,13 +39,19 @@ public:
 
   const Tape& tape() const;
 
+  /// Threads that evaluate blocks (the pool's participants, 1 = the caller only).
+  int threads() const;
+
   /// Structure-of-arrays evaluation of `count` points: inputs[k][i] is input k of point i
   /// (inputs.size() == tape().input_count). values[i] = F, or NaN where the point raised a
   /// run-time error; errors (optional) receive the error id per point (0 = none);
   /// attributes (optional) receive s[j] of point i at attributes[j][i] (j < outputs-1).
   /// Returns the number of points that raised an error.
-  std::size_t evaluate(std::span<const double* const> inputs, std::size_t count, double* values,
-    std::uint32_t* errors = nullptr, std::span<double* const> attributes = {});
+  std::size_t evaluate(std::span<const double* const> inputs,
+    std::size_t count,
+    double* values,
+    std::uint32_t* errors = nullptr,
+    std::span<double* const> attributes = {});
 
 private:
   struct Impl;

@@ -16,8 +16,10 @@ namespace frep
 
 struct IntervalResult
 {
-  Interval value;          ///< encloses F over the box (where no error occurs)
-  bool may_fail = false;   ///< some point of the box may raise a run-time error
+  /// Encloses F over the box (where no error occurs). The whole real line also stands for
+  /// "unknown, possibly NaN" (e.g. an unguarded sqrt of a negative part, or an opaque call).
+  Interval value;
+  bool may_fail = false; ///< some point of the box may raise a run-time error
 };
 
 class IntervalEvaluator
@@ -30,7 +32,8 @@ public:
 
 private:
   std::shared_ptr<const Tape> tape_;
-  std::vector<Interval> slots_;
+  std::vector<Interval> slots_;        // encloses the slot's non-NaN values over the box
+  std::vector<unsigned char> may_nan_; // the slot may be NaN somewhere in the box
 };
 
 } // namespace frep

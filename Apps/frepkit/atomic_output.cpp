@@ -1,0 +1,57 @@
+#include "atomic_output.h"
+
+#include "user_error.h"
+
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace frepkit
+{
+
+AtomicOutput::AtomicOutput(std::string path)
+  : path_(std::move(path))
+{
+  if (path_ == "-")
+  {
+    return;
+  }
+  temporary_ = path_ + ".tmp-" + std::to_string(::getpid());
+  file_.open(temporary_, std::ios::binary | std::ios::trunc);
+  if (!file_)
+  {
+    throw UserError(path_ + ": cannot write (temporary file " + temporary_ + ")");
+  }
+}
+
+AtomicOutput::~AtomicOutput()
+{
+  if (!temporary_.empty() && !committed_)
+  {
+    file_.close();
+    std::remove(temporary_.c_str());
+  }
+}
+
+std::ostream& AtomicOutput::stream()
+{
+  return temporary_.empty() ? std::cout : static_cast<std::ostream&>(file_);
+}
+
+void AtomicOutput::commit()
+{
+  if (temporary_.empty())
+  {
+    std::cout.flush();
+    committed_ = true;
+    return;
+  }
+  file_.close();
+  if (!file_ || std::rename(temporary_.c_str(), path_.c_str()) != 0)
+  {
+    throw UserError(path_ + ": cannot write the output file");
+  }
+  committed_ = true;
+}
+
+} // namespace frepkit

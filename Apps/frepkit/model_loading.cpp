@@ -1,0 +1,63 @@
+#include "model_loading.h"
+
+#include "Language/parser.h"
+#include "user_error.h"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace frepkit
+{
+
+LoadedProgram load_program(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw UserError(path + ": cannot open the model file");
+  }
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad())
+  {
+    throw UserError(path + ": cannot read the model file");
+  }
+  frep::ParseResult parsed = frep::parse_program(text, path);
+  return LoadedProgram{ path, parsed.program, std::move(parsed.diagnostics) };
+}
+
+std::string describe_object(const frep::ast::Object& object)
+{
+  std::ostringstream out;
+  out << object.name << "(x[" << object.x_dim << "], a[" << object.a_dim << "], s["
+      << object.s_dim << "])";
+  return out.str();
+}
+
+int choose_object(const LoadedProgram& loaded, const std::optional<std::string>& requested)
+{
+  const frep::ast::Program& program = *loaded.program;
+  if (program.objects.empty())
+  {
+    throw UserError(loaded.path + ": the file defines no object");
+  }
+  if (requested)
+  {
+    const int found = frep::ast::find_object(program, *requested);
+    if (found < 0)
+    {
+      std::string names;
+      for (const frep::ast::Object& object : program.objects)
+      {
+        names += names.empty() ? "" : ", ";
+        names += object.name;
+      }
+      throw UserError(loaded.path + ": no object named '" + *requested + "' (objects: " + names +
+        ")");
+    }
+    return found;
+  }
+  return frep::ast::select_object(program, "my_model");
+}
+
+} // namespace frepkit

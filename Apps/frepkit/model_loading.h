@@ -1,0 +1,35 @@
+// Reading and parsing a model file and choosing its object, shared by the subcommands.
+#pragma once
+
+#include "Language/ast.h"
+#include "Language/diagnostic.h"
+
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace frepkit
+{
+
+struct LoadedProgram
+{
+  std::string path;
+  std::shared_ptr<const frep::ast::Program> program;
+  std::vector<frep::Diagnostic> diagnostics; ///< parse errors (program is null then)
+};
+
+/// Reads `path` as bytes (any content, even binary) and parses it. Throws UserError when the
+/// file cannot be read; parse errors are returned in diagnostics.
+LoadedProgram load_program(const std::string& path);
+
+/// The object to evaluate: `requested` (case-insensitive), else my_model, else the first object
+/// (the original's rule). A requested name that does not exist is a UserError listing the
+/// objects (the original silently fell back; a typo should not evaluate the wrong object).
+/// Throws UserError when the file defines no object.
+int choose_object(const LoadedProgram& loaded, const std::optional<std::string>& requested);
+
+/// "name(x[3], a[1], s[1])"
+std::string describe_object(const frep::ast::Object& object);
+
+} // namespace frepkit

@@ -1,0 +1,197 @@
+#include "Eval/batch_evaluator.h"
+
+#include "Eval/batch_kernel.h"
+#include "Eval/tape_check.h"
+#include "Eval/thread_pool.h"
+
+#include <algorithm>
+#include <atomic>
+#include <limits>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+namespace frep
+{
+
+namespace
+{
+
+// 64-byte aligned doubles: whole cache lines per register row, aligned vector loads.
+struct AlignedDoubles
+{
+  struct Free
+  {
+    void operator()(double* p) const { ::operator delete[](p, std::align_val_t(64)); }
+  };
+  std::unique_ptr<double[], Free> data;
+
+  explicit AlignedDoubles(std::size_t n)
+    : data(static_cast<double*>(::operator new[](n * sizeof(double), std::align_val_t(64))))
+  {
+    std::fill(data.get(), data.get() + n, 0.0);
+  }
+};
+
+// Everything one participant of the pool writes while evaluating a block.
+struct Participant
+{
+  AlignedDoubles regs;
+  std::vector<std::uint32_t> errors;
+  eval::CallState calls;
+  std::size_t failures = 0;
+
+  Participant(const Tape& tape, int block)
+    : regs(std::max<std::size_t>(tape.slot_count, 1) * static_cast<std::size_t>(block))
+    , errors(static_cast<std::size_t>(block), 0)
+  {
+    std::size_t widest_in = 0;
+    std::size_t widest_out = 0;
+    for (const CallSite& site : tape.calls)
+    {
+      calls.scratch.push_back(site.function->make_scratch());
+      widest_in = std::max(widest_in, site.inputs.size());
+      widest_out = std::max(widest_out, site.outputs.size());
+    }
+    calls.in.assign(widest_in, 0.0);
+    calls.out.assign(widest_out, 0.0);
+  }
+};
+
+} // namespace
+
+struct BatchEvaluator::Impl
+{
+  std::shared_ptr<const Tape> tape;
+  std::shared_ptr<ThreadPool> pool;
+  int block = 256;
+  bool wide = true;
+  std::vector<std::unique_ptr<Participant>> participants; // made on first use, per pool slot
+};
+
+BatchEvaluator::BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOptions& options)
+  : impl_(std::make_unique<Impl>())
+{
+  if (!tape)
+  {
+    throw std::invalid_argument("BatchEvaluator: null tape");
+  }
+  if (options.block_size <= 0)
+  {
+    throw std::invalid_argument("BatchEvaluator: block_size must be positive");
+  }
+  eval::check_tape(*tape, "BatchEvaluator");
+  impl_->tape = std::move(tape);
+  impl_->pool = options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
+  impl_->block = options.block_size;
+  impl_->wide = options.wide_simd;
+  impl_->participants.resize(static_cast<std::size_t>(impl_->pool->size()));
+}
+
+BatchEvaluator::~BatchEvaluator() = default;
+
+const Tape& BatchEvaluator::tape() const
+{
+  return *impl_->tape;
+}
+
+int BatchEvaluator::threads() const
+{
+  return impl_->pool->size();
+}
+
+std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
+  std::size_t count,
+  double* values,
+  std::uint32_t* errors,
+  std::span<double* const> attributes)
+{
+  Impl& im = *impl_;
+  const Tape& tape = *im.tape;
+  if (inputs.size() < tape.input_count)
+  {
+    throw std::invalid_argument("BatchEvaluator::evaluate: fewer input arrays than tape inputs");
+  }
+  if (count == 0)
+  {
+    return 0;
+  }
+  const std::size_t block = static_cast<std::size_t>(im.block);
+  const std::size_t blocks = (count + block - 1) / block;
+  const std::size_t attribute_count =
+    std::min(attributes.size(), tape.outputs.empty() ? 0 : tape.outputs.size() - 1);
+  for (auto& p : im.participants)
+  {
+    if (p)
+    {
+      p->failures = 0;
+    }
+  }
+  const auto run = [&](std::size_t block_index, int slot)
+  {
+    std::unique_ptr<Participant>& mine = im.participants[static_cast<std::size_t>(slot)];
+    if (!mine)
+    {
+      mine = std::make_unique<Participant>(tape, im.block);
+    }
+    Participant& p = *mine;
+    const std::size_t base = block_index * block;
+    const int n = static_cast<int>(std::min(block, count - base));
+    std::fill(p.errors.begin(), p.errors.begin() + n, 0u);
+    eval::Block blk;
+    blk.regs = p.regs.data.get();
+    blk.errors = p.errors.data();
+    blk.n = n;
+    blk.stride = im.block;
+    blk.inputs = inputs.data();
+    blk.base = base;
+    eval::run_block(tape, blk, p.calls, im.wide);
+
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::uint32_t* err = p.errors.data();
+    const auto row = [&](std::uint32_t slot_index)
+    { return p.regs.data.get() + static_cast<std::size_t>(slot_index) * block; };
+    std::size_t failed = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      failed += err[i] != 0;
+    }
+    p.failures += failed;
+    if (values)
+    {
+      const double* v = tape.outputs.empty() ? nullptr : row(tape.outputs[0]);
+      for (int i = 0; i < n; ++i)
+      {
+        values[base + i] = (v == nullptr || err[i] != 0) ? nan : v[i];
+      }
+    }
+    for (std::size_t j = 0; j < attribute_count; ++j)
+    {
+      if (attributes[j] == nullptr)
+      {
+        continue;
+      }
+      const double* s = row(tape.outputs[j + 1]);
+      for (int i = 0; i < n; ++i)
+      {
+        attributes[j][base + i] = err[i] != 0 ? nan : s[i];
+      }
+    }
+    if (errors)
+    {
+      std::copy(err, err + n, errors + base);
+    }
+  };
+  im.pool->parallel_for(blocks, run);
+  std::size_t failures = 0;
+  for (auto& p : im.participants)
+  {
+    if (p)
+    {
+      failures += p->failures;
+    }
+  }
+  return failures;
+}
+
+} // namespace frep

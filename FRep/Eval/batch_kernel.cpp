@@ -1,0 +1,355 @@
+// Compiled with -fno-math-errno (see CMakeLists.txt): sqrt then becomes the vector instruction,
+// which is correctly rounded exactly like the scalar one; nothing else changes value.
+#include "Eval/batch_kernel.h"
+
+#include "Compiler/op_semantics.h"
+#include "Eval/scalar_ops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace frep::eval
+{
+
+namespace
+{
+
+namespace hf = frep::semantics;
+
+// Lane loops: element-wise, so there is no loop-carried dependency even when the output row
+// is also an operand row (the register allocator may reuse a slot). `ivdep` states exactly
+// that and lets GCC vectorise without run-time alias checks (restrict would promise more).
+#define FREP_LANES _Pragma("GCC ivdep") for (int i = 0; i < n; ++i)
+
+#define FREP_ALWAYS_INLINE [[gnu::always_inline]] inline
+
+// b ^ N by repeated multiplication (exactly hf_pow_int's operations), |b| < EPS -> 0 as a blend.
+template<int N, bool Negative>
+FREP_ALWAYS_INLINE void pow_int_lanes(double* o, const double* x, int n)
+{
+  FREP_LANES
+  {
+    const double b = x[i];
+    double v = 1.0;
+    for (int k = 0; k < N; ++k)
+    {
+      v *= b;
+    }
+    if constexpr (Negative)
+    {
+      v = 1 / v;
+    }
+    o[i] = std::fabs(b) < hf::kEps ? 0.0 : v;
+  }
+}
+
+constexpr int kMaxUnrolledPower = 16;
+
+template<int N = 0>
+FREP_ALWAYS_INLINE bool pow_int_unrolled(int exponent, double* o, const double* x, int n)
+{
+  if constexpr (N > kMaxUnrolledPower)
+  {
+    return false;
+  }
+  else
+  {
+    if (exponent == N)
+    {
+      pow_int_lanes<N, false>(o, x, n);
+      return true;
+    }
+    if (N > 0 && exponent == -N)
+    {
+      pow_int_lanes<N, true>(o, x, n);
+      return true;
+    }
+    return pow_int_unrolled<N + 1>(exponent, o, x, n);
+  }
+}
+
+FREP_ALWAYS_INLINE void call_lanes(const Tape& tape,
+  const Instruction& ins,
+  const Block& blk,
+  CallState& calls)
+{
+  const std::size_t site_index = static_cast<std::size_t>(ins.index);
+  const CallSite& site = tape.calls[site_index];
+  const std::size_t n_in = site.inputs.size();
+  const std::size_t n_out = site.outputs.size();
+  OpaqueFunction::Scratch* scratch = calls.scratch[site_index].get();
+  for (int i = 0; i < blk.n; ++i)
+  {
+    if (blk.errors[i] != 0)
+    {
+      continue; // the lane's result is already NaN; do not run a possibly costly function
+    }
+    for (std::size_t k = 0; k < n_in; ++k)
+    {
+      calls.in[k] = blk.regs[static_cast<std::size_t>(site.inputs[k]) * blk.stride + i];
+    }
+    const int status = site.function->evaluate(scratch,
+      std::span<const double>(calls.in.data(), n_in),
+      std::span<double>(calls.out.data(), n_out));
+    if (status != 0)
+    {
+      blk.errors[i] = static_cast<std::uint32_t>(status);
+      continue;
+    }
+    for (std::size_t k = 0; k < n_out; ++k)
+    {
+      blk.regs[static_cast<std::size_t>(site.outputs[k]) * blk.stride + i] = calls.out[k];
+    }
+  }
+}
+
+FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallState& calls)
+{
+  const int n = blk.n;
+  const std::size_t stride = static_cast<std::size_t>(blk.stride);
+  const std::uint32_t last = tape.slot_count == 0 ? 0 : tape.slot_count - 1;
+  // Operand fields an opcode does not use may hold anything: clamp so the pointer stays valid.
+  const auto row = [&](std::uint32_t slot) { return blk.regs + std::min(slot, last) * stride; };
+  std::uint32_t* err = blk.errors;
+  for (const Instruction& ins : tape.code)
+  {
+    double* o = row(ins.out);
+    const double* x = row(ins.a);
+    const double* y = row(ins.b);
+    const double* z = row(ins.c);
+    switch (ins.op)
+    {
+      case Opcode::Const:
+      {
+        const double v = ins.imm;
+        FREP_LANES o[i] = v;
+        break;
+      }
+      case Opcode::Input:
+        std::memcpy(
+          o, blk.inputs[ins.index] + blk.base, static_cast<std::size_t>(n) * sizeof(double));
+        break;
+      case Opcode::Add:
+        FREP_LANES o[i] = x[i] + y[i];
+        break;
+      case Opcode::Sub:
+        FREP_LANES o[i] = x[i] - y[i];
+        break;
+      case Opcode::Mul:
+        FREP_LANES o[i] = x[i] * y[i];
+        break;
+      case Opcode::Div:
+        FREP_LANES o[i] = x[i] / y[i];
+        break;
+      case Opcode::Neg:
+        FREP_LANES o[i] = -x[i];
+        break;
+      case Opcode::Square:
+        FREP_LANES o[i] = x[i] * x[i];
+        break;
+      case Opcode::Abs:
+        FREP_LANES o[i] = std::fabs(x[i]);
+        break;
+      case Opcode::Sqrt:
+        FREP_LANES o[i] = std::sqrt(x[i]);
+        break;
+      // libm: one call per lane (no vector libm: it would not give the same bits)
+      case Opcode::Exp:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::exp(x[i]);
+        break;
+      case Opcode::Log:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::log(x[i]);
+        break;
+      case Opcode::Log10:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::log10(x[i]);
+        break;
+      case Opcode::Sin:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::sin(x[i]);
+        break;
+      case Opcode::Cos:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::cos(x[i]);
+        break;
+      case Opcode::Tan:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::tan(x[i]);
+        break;
+      case Opcode::Asin:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::asin(x[i]);
+        break;
+      case Opcode::Acos:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::acos(x[i]);
+        break;
+      case Opcode::Atan:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::atan(x[i]);
+        break;
+      case Opcode::Sinh:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::sinh(x[i]);
+        break;
+      case Opcode::Cosh:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::cosh(x[i]);
+        break;
+      case Opcode::Tanh:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::tanh(x[i]);
+        break;
+      case Opcode::Atan2:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::atan2(x[i], y[i]);
+        break;
+      case Opcode::Pow:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::pow(x[i], y[i]);
+        break;
+      case Opcode::Floor:
+        FREP_LANES o[i] = std::floor(x[i]);
+        break;
+      case Opcode::Ceil:
+        FREP_LANES o[i] = std::ceil(x[i]);
+        break;
+      case Opcode::Trunc:
+        FREP_LANES o[i] = std::trunc(x[i]);
+        break;
+      case Opcode::Frac:
+        for (int i = 0; i < n; ++i)
+          o[i] = frac(x[i]);
+        break;
+      case Opcode::Fmod:
+        for (int i = 0; i < n; ++i)
+          o[i] = std::fmod(x[i], y[i]);
+        break;
+      case Opcode::HfPow:
+        for (int i = 0; i < n; ++i)
+          o[i] = hf::hf_pow(x[i], y[i]);
+        break;
+      case Opcode::HfPowInt:
+        if (!pow_int_unrolled(ins.index, o, x, n))
+        {
+          for (int i = 0; i < n; ++i)
+          {
+            o[i] = hf::hf_pow_int(x[i], ins.index);
+          }
+        }
+        break;
+      case Opcode::HfMod:
+        for (int i = 0; i < n; ++i)
+          o[i] = hf::hf_mod(x[i], y[i]);
+        break;
+      case Opcode::HfRound:
+        for (int i = 0; i < n; ++i)
+          o[i] = static_cast<double>(hf::hf_round(x[i]));
+        break;
+      case Opcode::Max:
+        FREP_LANES o[i] = hf::hf_max(x[i], y[i]);
+        break;
+      case Opcode::Min:
+        FREP_LANES o[i] = hf::hf_min(x[i], y[i]);
+        break;
+      case Opcode::Union:
+        FREP_LANES o[i] = hf::unite(x[i], y[i]);
+        break;
+      case Opcode::Intersect:
+        FREP_LANES o[i] = hf::intersect(x[i], y[i]);
+        break;
+      case Opcode::Eq:
+        FREP_LANES o[i] = std::fabs(x[i] - y[i]) < hf::kEps ? 1.0 : 0.0;
+        break;
+      case Opcode::Ne:
+        FREP_LANES o[i] = std::fabs(x[i] - y[i]) >= hf::kEps ? 1.0 : 0.0;
+        break;
+      case Opcode::Lt:
+        FREP_LANES o[i] = x[i] < y[i] ? 1.0 : 0.0;
+        break;
+      case Opcode::Le:
+        FREP_LANES o[i] = x[i] <= y[i] ? 1.0 : 0.0;
+        break;
+      case Opcode::Gt:
+        FREP_LANES o[i] = x[i] > y[i] ? 1.0 : 0.0;
+        break;
+      case Opcode::Ge:
+        FREP_LANES o[i] = x[i] >= y[i] ? 1.0 : 0.0;
+        break;
+      case Opcode::Truthy:
+        FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 1.0 : 0.0;
+        break;
+      case Opcode::And:
+        FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) & (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
+        break;
+      case Opcode::Or:
+        FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) | (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
+        break;
+      case Opcode::Not:
+        FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 0.0 : 1.0;
+        break;
+      case Opcode::Select:
+        FREP_LANES o[i] = x[i] != 0.0 ? y[i] : z[i];
+        break;
+      case Opcode::ErrorIf:
+      {
+        const std::uint32_t id = static_cast<std::uint32_t>(ins.index);
+        FREP_LANES err[i] = (err[i] == 0 && x[i] != 0.0) ? id : err[i];
+        break;
+      }
+      case Opcode::Call:
+        call_lanes(tape, ins, blk, calls);
+        break;
+    }
+  }
+}
+
+#undef FREP_LANES
+
+void run_block_baseline(const Tape& tape, const Block& blk, CallState& calls)
+{
+  run_block_body(tape, blk, calls);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// AVX2 without FMA: wider lanes, the same operations.
+[[gnu::target("avx2")]] void run_block_avx2(const Tape& tape, const Block& blk, CallState& calls)
+{
+  run_block_body(tape, blk, calls);
+}
+#endif
+
+} // namespace
+
+bool cpu_has_avx2()
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool has = []
+  {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return has;
+#else
+  return false;
+#endif
+}
+
+void run_block(const Tape& tape, const Block& block, CallState& calls, bool wide)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (wide && cpu_has_avx2())
+  {
+    run_block_avx2(tape, block, calls);
+    return;
+  }
+#else
+  (void)wide;
+#endif
+  run_block_baseline(tape, block, calls);
+}
+
+} // namespace frep::eval

@@ -1,0 +1,42 @@
+// The per-block kernel of BatchEvaluator: one instruction at a time over all lanes of a block
+// (structure of arrays), in loops GCC vectorises. Compiled twice, for the SSE2 baseline and for
+// AVX2, and chosen at run time; both perform the same IEEE operations per lane, without FMA
+// (-ffp-contract=off), so they give identical bits. Internal to the evaluators.
+#pragma once
+
+#include "Compiler/tape.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace frep::eval
+{
+
+/// Per-thread state for opaque calls (the functions' scratch and gather/scatter buffers).
+struct CallState
+{
+  std::vector<std::unique_ptr<OpaqueFunction::Scratch>> scratch; ///< per call site
+  std::vector<double> in;
+  std::vector<double> out;
+};
+
+/// One block: lanes [0, n) of a register file of slot_count rows of `stride` lanes.
+struct Block
+{
+  double* regs = nullptr;          ///< row s = slot s, `stride` doubles, 64-byte aligned
+  std::uint32_t* errors = nullptr; ///< per lane, 0 = none (must be zeroed by the caller)
+  int n = 0;                       ///< active lanes (<= stride)
+  int stride = 0;
+  const double* const* inputs = nullptr; ///< inputs[k] + base = input k of lane 0
+  std::size_t base = 0;
+};
+
+/// Whether the AVX2 kernel may run on this CPU.
+bool cpu_has_avx2();
+
+/// Runs the tape over one block. `wide` selects the AVX2 build (only if cpu_has_avx2()).
+void run_block(const Tape& tape, const Block& block, CallState& calls, bool wide);
+
+} // namespace frep::eval

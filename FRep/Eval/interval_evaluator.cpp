@@ -1,0 +1,797 @@
+// Interval rules. Every slot carries an enclosure of its non-NaN values over the box and a flag
+// saying it may be NaN somewhere; a NaN-capable output is reported as the whole line.
+//
+// Soundness is about the values the point evaluator computes, not the real functions:
+// - correctly rounded operations (+ - * / sqrt) are monotone after rounding, so rounded
+//   endpoint values already enclose; one ulp outward is kept as a margin;
+// - libm functions are only accurate to an ulp or two and need not be monotone after
+//   rounding, so their endpoint values are widened by a few ulps relative to the value;
+// - formulas with cancellation (the R-functions) get an absolute margin scaled by the operand
+//   magnitudes (see r_function()).
+#include "Eval/interval_evaluator.h"
+
+#include "Compiler/op_semantics.h"
+#include "Eval/tape_check.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace frep
+{
+
+namespace
+{
+
+namespace hf = frep::semantics;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+/// An enclosure of the non-NaN values of a slot plus whether NaN is possible.
+struct Range
+{
+  Interval v;
+  bool nan = false;
+};
+
+double down(double x)
+{
+  return std::nextafter(x, -kInf);
+}
+double up(double x)
+{
+  return std::nextafter(x, kInf);
+}
+
+Range whole(bool nan = true)
+{
+  return { Interval::everything(), nan };
+}
+
+bool has_inf(const Interval& i)
+{
+  return std::isinf(i.lo) || std::isinf(i.hi);
+}
+bool has_zero(const Interval& i)
+{
+  return i.lo <= 0 && 0 <= i.hi;
+}
+
+/// [lo, hi] of a correctly rounded operation, one ulp outward; NaN bounds mean "unknown".
+Range rounded(double lo, double hi, bool nan)
+{
+  if (std::isnan(lo) || std::isnan(hi))
+  {
+    return whole(true);
+  }
+  return { { down(lo), up(hi) }, nan };
+}
+
+/// [lo, hi] of a libm result: relative margin of 4 DBL_EPSILON (several ulps) plus one ulp.
+double libm_down(double x)
+{
+  return std::isinf(x) ? x : down(x - std::fabs(x) * 4 * DBL_EPSILON);
+}
+double libm_up(double x)
+{
+  return std::isinf(x) ? x : up(x + std::fabs(x) * 4 * DBL_EPSILON);
+}
+Range libm(double lo, double hi, bool nan)
+{
+  if (std::isnan(lo) || std::isnan(hi))
+  {
+    return whole(true);
+  }
+  return { { libm_down(lo), libm_up(hi) }, nan };
+}
+
+Range exact(double lo, double hi, bool nan)
+{
+  if (std::isnan(lo) || std::isnan(hi))
+  {
+    return whole(true);
+  }
+  return { { lo, hi }, nan };
+}
+
+Range hull(const Range& a, const Range& b)
+{
+  return { { std::min(a.v.lo, b.v.lo), std::max(a.v.hi, b.v.hi) }, a.nan || b.nan };
+}
+
+Range clamp(Range r, double lo, double hi)
+{
+  r.v.lo = std::clamp(r.v.lo, lo, hi);
+  r.v.hi = std::clamp(r.v.hi, lo, hi);
+  return r;
+}
+
+/// Min and max of the non-NaN values among candidates (corners of a monotone/bilinear op).
+template<std::size_t N>
+Range corners(const double (&c)[N], bool nan, bool libm_margin)
+{
+  double lo = kInf;
+  double hi = -kInf;
+  bool any = false;
+  for (double v : c)
+  {
+    if (std::isnan(v))
+    {
+      nan = true;
+      continue;
+    }
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    any = true;
+  }
+  if (!any)
+  {
+    return whole(true);
+  }
+  return libm_margin ? libm(lo, hi, nan) : rounded(lo, hi, nan);
+}
+
+Range add(const Range& a, const Range& b)
+{
+  const bool nan =
+    a.nan || b.nan || (a.v.hi == kInf && b.v.lo == -kInf) || (a.v.lo == -kInf && b.v.hi == kInf);
+  return rounded(a.v.lo + b.v.lo, a.v.hi + b.v.hi, nan);
+}
+
+Range sub(const Range& a, const Range& b)
+{
+  const bool nan =
+    a.nan || b.nan || (a.v.hi == kInf && b.v.hi == kInf) || (a.v.lo == -kInf && b.v.lo == -kInf);
+  return rounded(a.v.lo - b.v.hi, a.v.hi - b.v.lo, nan);
+}
+
+Range mul(const Range& a, const Range& b)
+{
+  const bool nan =
+    a.nan || b.nan || (has_zero(a.v) && has_inf(b.v)) || (has_zero(b.v) && has_inf(a.v));
+  const double c[] = { a.v.lo * b.v.lo, a.v.lo * b.v.hi, a.v.hi * b.v.lo, a.v.hi * b.v.hi };
+  return corners(c, nan, false);
+}
+
+Range div(const Range& a, const Range& b)
+{
+  if (has_zero(b.v))
+  {
+    // x/±0 is ±inf (by the zero's sign) and 0/0 is NaN: nothing useful remains.
+    return whole(a.nan || b.nan || has_zero(a.v) || (has_inf(a.v) && has_inf(b.v)));
+  }
+  const bool nan = a.nan || b.nan || (has_inf(a.v) && has_inf(b.v));
+  const double c[] = { a.v.lo / b.v.lo, a.v.lo / b.v.hi, a.v.hi / b.v.lo, a.v.hi / b.v.hi };
+  return corners(c, nan, false);
+}
+
+Range square(const Range& a)
+{
+  const double l = a.v.lo * a.v.lo;
+  const double h = a.v.hi * a.v.hi;
+  if (has_zero(a.v))
+  {
+    return { { 0.0, up(std::max(l, h)) }, a.nan };
+  }
+  return rounded(std::min(l, h), std::max(l, h), a.nan);
+}
+
+Range absolute(const Range& a)
+{
+  if (has_zero(a.v))
+  {
+    return { { 0.0, std::max(-a.v.lo, a.v.hi) }, a.nan };
+  }
+  const double l = std::fabs(a.v.lo);
+  const double h = std::fabs(a.v.hi);
+  return { { std::min(l, h), std::max(l, h) }, a.nan };
+}
+
+/// An increasing libm function on [lo, hi] ∩ [dom_lo, dom_hi]; outside the domain is NaN.
+template<class F>
+Range increasing(const Range& a, F f, double dom_lo = -kInf, double dom_hi = kInf)
+{
+  const bool outside = a.v.lo < dom_lo || a.v.hi > dom_hi;
+  const double lo = std::max(a.v.lo, dom_lo);
+  const double hi = std::min(a.v.hi, dom_hi);
+  if (lo > hi)
+  {
+    return whole(true);
+  }
+  return libm(f(lo), f(hi), a.nan || outside);
+}
+
+template<class F>
+Range decreasing(const Range& a, F f, double dom_lo = -kInf, double dom_hi = kInf)
+{
+  const bool outside = a.v.lo < dom_lo || a.v.hi > dom_hi;
+  const double lo = std::max(a.v.lo, dom_lo);
+  const double hi = std::min(a.v.hi, dom_hi);
+  if (lo > hi)
+  {
+    return whole(true);
+  }
+  return libm(f(hi), f(lo), a.nan || outside);
+}
+
+/// Whether some offset + k * period lies in [lo, hi] (k integer), erring towards "yes": the
+/// quotients carry rounding errors, and a false "yes" only loosens the bound.
+bool may_contain_periodic(double lo, double hi, double offset, double period)
+{
+  const double t_lo = (lo - offset) / period;
+  const double t_hi = (hi - offset) / period;
+  const double slack_lo = 1e-9 * (1 + std::fabs(t_lo));
+  const double slack_hi = 1e-9 * (1 + std::fabs(t_hi));
+  return std::floor(t_hi + slack_hi) >= t_lo - slack_lo;
+}
+
+// Beyond this magnitude the argument reduction of our extremum test is not trusted.
+constexpr double kTrigLimit = 1e8;
+
+/// sin or cos: monotone between extrema; the extrema are where the derivative vanishes.
+template<class F>
+Range trig(const Range& a, F f, double max_at, double min_at)
+{
+  if (has_inf(a.v))
+  {
+    return { { -1, 1 }, true }; // sin(±inf) is NaN
+  }
+  if (a.v.hi - a.v.lo >= 2 * kPi || std::fabs(a.v.lo) > kTrigLimit ||
+      std::fabs(a.v.hi) > kTrigLimit)
+  {
+    return { { -1, 1 }, a.nan };
+  }
+  const double fl = f(a.v.lo);
+  const double fh = f(a.v.hi);
+  Range r = libm(std::min(fl, fh), std::max(fl, fh), a.nan);
+  if (may_contain_periodic(a.v.lo, a.v.hi, max_at, 2 * kPi))
+  {
+    r.v.hi = 1;
+  }
+  if (may_contain_periodic(a.v.lo, a.v.hi, min_at, 2 * kPi))
+  {
+    r.v.lo = -1;
+  }
+  return clamp(r, -1, 1);
+}
+
+Range tangent(const Range& a)
+{
+  if (has_inf(a.v))
+  {
+    return whole(true);
+  }
+  if (a.v.hi - a.v.lo >= kPi || std::fabs(a.v.lo) > kTrigLimit || std::fabs(a.v.hi) > kTrigLimit ||
+      may_contain_periodic(a.v.lo, a.v.hi, kPi / 2, kPi))
+  {
+    return whole(a.nan);
+  }
+  return libm(std::tan(a.v.lo), std::tan(a.v.hi), a.nan);
+}
+
+Range hyperbolic_cosine(const Range& a)
+{
+  const double l = std::cosh(a.v.lo);
+  const double h = std::cosh(a.v.hi);
+  Range r =
+    has_zero(a.v) ? libm(1, std::max(l, h), a.nan) : libm(std::min(l, h), std::max(l, h), a.nan);
+  r.v.lo = std::max(r.v.lo, 1.0);
+  return r;
+}
+
+/// Rounding ops (floor, ceil, trunc) are exact and non-decreasing.
+template<class F>
+Range step(const Range& a, F f)
+{
+  return exact(f(a.v.lo), f(a.v.hi), a.nan);
+}
+
+Range fractional(const Range& a)
+{
+  const Interval& v = a.v;
+  if (v.lo >= 0 && std::isfinite(v.hi) && std::floor(v.lo) == std::floor(v.hi))
+  {
+    const double k = std::floor(v.lo); // x - k is exact for x in [k, k+1)
+    return { { v.lo - k, v.hi - k }, a.nan };
+  }
+  if (v.hi <= 0 && std::isfinite(v.lo) && std::ceil(v.lo) == std::ceil(v.hi))
+  {
+    const double k = std::ceil(v.hi);
+    return { { v.lo - k, v.hi - k }, a.nan };
+  }
+  return { { v.lo >= 0 ? 0.0 : -1.0, v.hi <= 0 ? 0.0 : 1.0 }, a.nan };
+}
+
+/// fmod(a, b): NaN for b = 0 or infinite a; |r| <= |a|, |r| < |b|, sign of a; exact.
+Range remainder(const Range& a, const Range& b)
+{
+  const bool nan = a.nan || b.nan || has_zero(b.v) || has_inf(a.v);
+  const double b_max = std::max(std::fabs(b.v.lo), std::fabs(b.v.hi));
+  const double b_min = has_zero(b.v) ? 0.0 : std::min(std::fabs(b.v.lo), std::fabs(b.v.hi));
+  const double a_max = std::max(std::fabs(a.v.lo), std::fabs(a.v.hi));
+  if (a_max < b_min)
+  {
+    return { a.v, nan }; // fmod(x, y) = x exactly when |x| < |y|
+  }
+  const double lo = a.v.lo >= 0 ? 0.0 : -std::min(-a.v.lo, b_max);
+  const double hi = a.v.hi <= 0 ? 0.0 : std::min(a.v.hi, b_max);
+  return { { lo, hi }, nan };
+}
+
+/// HF_round as a double: non-decreasing within the int range; NaN and out-of-range values
+/// give INT_MIN (never NaN).
+Range hf_round_range(const Range& a)
+{
+  const double int_min = static_cast<double>(INT_MIN);
+  const double int_max = static_cast<double>(INT_MAX);
+  Range r;
+  if (a.v.lo >= int_min && a.v.hi < 2147483648.0)
+  {
+    r = { { static_cast<double>(hf::hf_round(a.v.lo)), static_cast<double>(hf::hf_round(a.v.hi)) },
+      false };
+  }
+  else
+  {
+    r = { { int_min, int_max }, false };
+  }
+  if (a.nan)
+  {
+    r.v.lo = int_min;
+  }
+  return r;
+}
+
+/// hf_pow_int(a, n) (also hf_pow's integral branch). |a| < EPS gives 0; elsewhere repeated
+/// multiplication is, after rounding, monotone in |a| with a sign of a^n, so the exact values
+/// at the ends of each sign part enclose it with no margin.
+Range pow_int(const Range& a, int n, bool negative)
+{
+  const auto f = [&](double x) { return hf::hf_pow_repeated(x, n, negative); };
+  Range r{ { kInf, -kInf }, false };
+  bool any = false;
+  const auto include = [&](double x, double y)
+  {
+    const double fx = f(x);
+    const double fy = f(y);
+    if (std::isnan(fx) || std::isnan(fy))
+    {
+      r.nan = true;
+      return;
+    }
+    r.v.lo = std::min({ r.v.lo, fx, fy });
+    r.v.hi = std::max({ r.v.hi, fx, fy });
+    any = true;
+  };
+  if (a.v.lo <= -hf::kEps)
+  {
+    include(a.v.lo, std::min(a.v.hi, -hf::kEps));
+  }
+  if (a.v.hi >= hf::kEps)
+  {
+    include(std::max(a.v.lo, hf::kEps), a.v.hi);
+  }
+  if (a.v.lo < hf::kEps && a.v.hi > -hf::kEps)
+  {
+    r.v.lo = std::min(r.v.lo, 0.0);
+    r.v.hi = std::max(r.v.hi, 0.0);
+    any = true;
+  }
+  if (a.nan)
+  {
+    // NaN ^ 0 is 1.0 (the loop runs zero times); otherwise NaN stays NaN.
+    if (n == 0)
+    {
+      r.v.lo = std::min(r.v.lo, 1.0);
+      r.v.hi = std::max(r.v.hi, 1.0);
+      any = true;
+    }
+    else
+    {
+      r.nan = true;
+    }
+  }
+  if (!any)
+  {
+    return whole(true);
+  }
+  return r;
+}
+
+Range hf_pow_int_op(const Range& a, int n)
+{
+  return pow_int(a, n < 0 ? -n : n, n < 0);
+}
+
+/// hf_pow(a, b), the value part. Tight for a constant exponent and for bases >= EPS.
+Range hf_pow_range(const Range& a, const Range& b)
+{
+  if (b.nan || has_inf(b.v))
+  {
+    return whole(true);
+  }
+  if (b.v.lo == b.v.hi)
+  {
+    const double e = b.v.lo;
+    if ((e - std::floor(e)) < hf::kEps)
+    {
+      return pow_int(a, hf::hf_round(std::fabs(e)), e < 0.0);
+    }
+    // exp(e * log(a)): monotone in a >= EPS; NaN for a <= -EPS; 0 for |a| < EPS.
+    Range r{ { kInf, -kInf }, a.nan || a.v.lo <= -hf::kEps };
+    bool any = false;
+    if (a.v.lo < hf::kEps && a.v.hi > -hf::kEps)
+    {
+      r.v = { 0.0, 0.0 };
+      any = true;
+    }
+    if (a.v.hi >= hf::kEps)
+    {
+      const double lo = std::max(a.v.lo, hf::kEps);
+      const double y1 = e * std::log(lo);
+      const double y2 = e * std::log(a.v.hi);
+      const double f1 = std::exp(y1);
+      const double f2 = std::exp(y2);
+      if (std::isnan(f1) || std::isnan(f2))
+      {
+        return whole(true);
+      }
+      // exp amplifies the rounding error of its argument by |y| (an infinite y gives an exact
+      // 0 or inf, which needs no margin).
+      const auto finite_abs = [](double y) { return std::isfinite(y) ? std::fabs(y) : 0.0; };
+      const double rel = (std::max(finite_abs(y1), finite_abs(y2)) * 2 + 8) * DBL_EPSILON;
+      const auto widen = [&](double f, double sign)
+      { return (f == 0 || std::isinf(f)) ? f : f * (1 + sign * rel); };
+      r.v.lo = std::min(r.v.lo, widen(std::min(f1, f2), -1));
+      r.v.hi = std::max(r.v.hi, widen(std::max(f1, f2), 1));
+      r.v = { down(r.v.lo), up(r.v.hi) };
+      any = true;
+    }
+    return any ? r : whole(true);
+  }
+  if (a.nan || a.v.lo < hf::kEps || has_inf(a.v))
+  {
+    return whole(true);
+  }
+  // Positive base, varying exponent: the value is a^e' with e' in [b.lo - EPS, b.hi] (the
+  // integral branch uses floor(e) >= e - EPS), bilinear in (e', log a): extrema at corners.
+  const double e_lo = b.v.lo - hf::kEps;
+  const double c[] = { std::pow(a.v.lo, e_lo),
+    std::pow(a.v.lo, b.v.hi),
+    std::pow(a.v.hi, e_lo),
+    std::pow(a.v.hi, b.v.hi) };
+  const double y_max = std::max(std::fabs(b.v.lo) + 1, std::fabs(b.v.hi)) *
+                       std::max(std::fabs(std::log(a.v.lo)), std::fabs(std::log(a.v.hi)));
+  const double n_max = std::max(std::fabs(b.v.lo), std::fabs(b.v.hi)) + 1;
+  const double rel = (2 * y_max + n_max + 8) * DBL_EPSILON;
+  Range r = corners(c, false, true);
+  if (r.nan || !std::isfinite(rel))
+  {
+    return whole(true);
+  }
+  // An overflowing corner is inf: widen only finite bounds (inf - inf*rel would be NaN), and
+  // let an infinite lower bound come down to the largest double (values near it round to inf).
+  r.v.lo = std::isfinite(r.v.lo) ? down(r.v.lo - std::fabs(r.v.lo) * rel)
+                                 : std::min(r.v.lo, std::numeric_limits<double>::max());
+  r.v.hi = std::isfinite(r.v.hi) ? up(r.v.hi + std::fabs(r.v.hi) * rel) : r.v.hi;
+  r.v.lo = std::max(r.v.lo, 0.0);
+  return r;
+}
+
+/// C pow: tight only for a positive finite base and a finite exponent (corners of the
+/// bilinear b * log a); anything else may be NaN or change sign.
+Range c_pow(const Range& a, const Range& b)
+{
+  if (a.nan || b.nan || !(a.v.lo > 0) || has_inf(a.v) || has_inf(b.v))
+  {
+    return whole(true);
+  }
+  const double c[] = { std::pow(a.v.lo, b.v.lo),
+    std::pow(a.v.lo, b.v.hi),
+    std::pow(a.v.hi, b.v.lo),
+    std::pow(a.v.hi, b.v.hi) };
+  Range r = corners(c, false, true);
+  r.v.lo = std::max(r.v.lo, 0.0);
+  return r;
+}
+
+/// max/min as (a > b) ? a : b and (a < b) ? a : b: a NaN operand a yields b, a NaN b yields NaN.
+Range max_min(const Range& a, const Range& b, bool is_max)
+{
+  Range r = is_max ? Range{ { std::max(a.v.lo, b.v.lo), std::max(a.v.hi, b.v.hi) }, false }
+                   : Range{ { std::min(a.v.lo, b.v.lo), std::min(a.v.hi, b.v.hi) }, false };
+  if (a.nan)
+  {
+    r = hull(r, Range{ b.v, false });
+  }
+  r.nan = b.nan;
+  return r;
+}
+
+/// Union / Intersect: l + r ± sqrt(l² + r²) is non-decreasing in each argument, so the values
+/// at the interval ends enclose it. Rounding can break exact monotonicity by a few ulps of
+/// the operands' magnitude (cancellation), so the margin is absolute: 8 DBL_EPSILON (|l|+|r|),
+/// plus 2^-500 for squares that underflow. Huge operands overflow l² (and infinite ones give
+/// NaN through the 0*r*l term), so they get no rule.
+Range r_function(const Range& a, const Range& b, bool is_union)
+{
+  const double kHuge = 0x1p500;
+  const double m =
+    std::max(std::fabs(a.v.lo), std::fabs(a.v.hi)) + std::max(std::fabs(b.v.lo), std::fabs(b.v.hi));
+  if (!(m < kHuge))
+  {
+    return whole(true);
+  }
+  const auto f = is_union ? hf::unite : hf::intersect;
+  const double pad = 8 * DBL_EPSILON * m + 0x1p-500;
+  return { { down(f(a.v.lo, b.v.lo) - pad), up(f(a.v.hi, b.v.hi) + pad) }, a.nan || b.nan };
+}
+
+Range boolean(bool can_true, bool can_false)
+{
+  return { { can_true && !can_false ? 1.0 : 0.0, can_false && !can_true ? 0.0 : 1.0 }, false };
+}
+
+bool may_be_truthy(const Range& a)
+{
+  return a.v.hi >= hf::kEps || a.v.lo <= -hf::kEps;
+}
+bool may_be_falsy(const Range& a)
+{
+  return a.nan || (a.v.lo < hf::kEps && a.v.hi > -hf::kEps);
+}
+bool may_be_nonzero(const Range& a)
+{
+  return a.nan || a.v.lo < 0 || a.v.hi > 0;
+}
+bool may_be_zero(const Range& a)
+{
+  return a.v.lo <= 0 && a.v.hi >= 0;
+}
+
+} // namespace
+
+IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
+  : tape_(std::move(tape))
+{
+  if (!tape_)
+  {
+    throw std::invalid_argument("IntervalEvaluator: null tape");
+  }
+  eval::check_tape(*tape_, "IntervalEvaluator");
+  slots_.assign(tape_->slot_count, Interval::everything());
+  may_nan_.assign(tape_->slot_count, 1);
+}
+
+IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
+{
+  const Tape& tape = *tape_;
+  if (box.size() < tape.input_count)
+  {
+    throw std::invalid_argument("IntervalEvaluator::evaluate: box has fewer intervals than inputs");
+  }
+  IntervalResult result;
+  const auto get = [&](std::uint32_t s) { return Range{ slots_[s], may_nan_[s] != 0 }; };
+  const auto put = [&](std::uint32_t s, const Range& r)
+  {
+    slots_[s] = r.v;
+    may_nan_[s] = r.nan ? 1 : 0;
+  };
+  for (const Instruction& ins : tape.code)
+  {
+    const Opcode op = ins.op;
+    if (op == Opcode::Call)
+    {
+      const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
+      for (std::uint32_t s : site.outputs)
+      {
+        put(s, whole(true));
+      }
+      result.may_fail = true;
+      continue;
+    }
+    if (op == Opcode::Input)
+    {
+      const Interval& in = box[static_cast<std::size_t>(ins.index)];
+      put(ins.out, (in.lo <= in.hi) ? Range{ in, false } : whole(true));
+      continue;
+    }
+    const Range a = eval::reads_a(op) ? get(ins.a) : Range{};
+    const Range b = eval::reads_b(op) ? get(ins.b) : Range{};
+    if (op == Opcode::ErrorIf)
+    {
+      result.may_fail = result.may_fail || may_be_nonzero(a);
+      continue;
+    }
+    Range r;
+    switch (op)
+    {
+      case Opcode::Const:
+        r = std::isnan(ins.imm) ? whole(true) : Range{ Interval::point(ins.imm), false };
+        break;
+      case Opcode::Add:
+        r = add(a, b);
+        break;
+      case Opcode::Sub:
+        r = sub(a, b);
+        break;
+      case Opcode::Mul:
+        r = mul(a, b);
+        break;
+      case Opcode::Div:
+        r = div(a, b);
+        break;
+      case Opcode::Neg:
+        r = { { -a.v.hi, -a.v.lo }, a.nan };
+        break;
+      case Opcode::Square:
+        r = square(a);
+        break;
+      case Opcode::Abs:
+        r = absolute(a);
+        break;
+      case Opcode::Sqrt:
+        if (a.v.hi < 0)
+        {
+          r = whole(true);
+        }
+        else
+        {
+          r = rounded(std::sqrt(std::max(a.v.lo, 0.0)), std::sqrt(a.v.hi), a.nan || a.v.lo < 0);
+          r.v.lo = std::max(r.v.lo, 0.0);
+        }
+        break;
+      case Opcode::Exp:
+        r = increasing(a, [](double x) { return std::exp(x); });
+        r.v.lo = std::max(r.v.lo, 0.0);
+        break;
+      case Opcode::Log:
+        r = increasing(
+          a, [](double x) { return std::log(x); }, 0.0);
+        break;
+      case Opcode::Log10:
+        r = increasing(
+          a, [](double x) { return std::log10(x); }, 0.0);
+        break;
+      case Opcode::Sin:
+        r = trig(
+          a, [](double x) { return std::sin(x); }, kPi / 2, -kPi / 2);
+        break;
+      case Opcode::Cos:
+        r = trig(
+          a, [](double x) { return std::cos(x); }, 0.0, kPi);
+        break;
+      case Opcode::Tan:
+        r = tangent(a);
+        break;
+      case Opcode::Asin:
+        r = increasing(
+          a, [](double x) { return std::asin(x); }, -1.0, 1.0);
+        break;
+      case Opcode::Acos:
+        r = decreasing(
+          a, [](double x) { return std::acos(x); }, -1.0, 1.0);
+        r.v.lo = std::max(r.v.lo, 0.0);
+        break;
+      case Opcode::Atan:
+        r = increasing(a, [](double x) { return std::atan(x); });
+        break;
+      case Opcode::Sinh:
+        r = increasing(a, [](double x) { return std::sinh(x); });
+        break;
+      case Opcode::Cosh:
+        r = hyperbolic_cosine(a);
+        break;
+      case Opcode::Tanh:
+        r = clamp(increasing(a, [](double x) { return std::tanh(x); }), -1, 1);
+        break;
+      case Opcode::Atan2:
+        r = { { down(-kPi), up(kPi) }, a.nan || b.nan };
+        break;
+      case Opcode::Pow:
+        r = c_pow(a, b);
+        break;
+      case Opcode::Floor:
+        r = step(a, [](double x) { return std::floor(x); });
+        break;
+      case Opcode::Ceil:
+        r = step(a, [](double x) { return std::ceil(x); });
+        break;
+      case Opcode::Trunc:
+        r = step(a, [](double x) { return std::trunc(x); });
+        break;
+      case Opcode::Frac:
+        r = fractional(a);
+        break;
+      case Opcode::Fmod:
+        r = remainder(a, b);
+        break;
+      case Opcode::HfPow:
+        r = hf_pow_range(a, b);
+        break;
+      case Opcode::HfPowInt:
+        r = hf_pow_int_op(a, ins.index);
+        break;
+      case Opcode::HfMod:
+        r = remainder(hf_round_range(a), hf_round_range(b));
+        break;
+      case Opcode::HfRound:
+        r = hf_round_range(a);
+        break;
+      case Opcode::Max:
+        r = max_min(a, b, true);
+        break;
+      case Opcode::Min:
+        r = max_min(a, b, false);
+        break;
+      case Opcode::Union:
+        r = r_function(a, b, true);
+        break;
+      case Opcode::Intersect:
+        r = r_function(a, b, false);
+        break;
+      case Opcode::Eq:
+      case Opcode::Ne:
+      {
+        // The point computes fabs(a - b): enclose the rounded difference, then decide.
+        const Range d = sub(a, b);
+        // NaN differences make both |d| < EPS and |d| >= EPS false.
+        const bool small = d.v.lo < hf::kEps && d.v.hi > -hf::kEps;
+        const bool large = d.v.hi >= hf::kEps || d.v.lo <= -hf::kEps;
+        r = op == Opcode::Eq ? boolean(small, large || d.nan) : boolean(large, small || d.nan);
+        break;
+      }
+      case Opcode::Lt:
+        r = boolean(a.v.lo < b.v.hi, a.nan || b.nan || a.v.hi >= b.v.lo);
+        break;
+      case Opcode::Le:
+        r = boolean(a.v.lo <= b.v.hi, a.nan || b.nan || a.v.hi > b.v.lo);
+        break;
+      case Opcode::Gt:
+        r = boolean(a.v.hi > b.v.lo, a.nan || b.nan || a.v.lo <= b.v.hi);
+        break;
+      case Opcode::Ge:
+        r = boolean(a.v.hi >= b.v.lo, a.nan || b.nan || a.v.lo < b.v.hi);
+        break;
+      case Opcode::Truthy:
+        r = boolean(may_be_truthy(a), may_be_falsy(a));
+        break;
+      case Opcode::Not:
+        r = boolean(may_be_falsy(a), may_be_truthy(a));
+        break;
+      case Opcode::And:
+        r = boolean(may_be_truthy(a) && may_be_truthy(b), may_be_falsy(a) || may_be_falsy(b));
+        break;
+      case Opcode::Or:
+        r = boolean(may_be_truthy(a) || may_be_truthy(b), may_be_falsy(a) && may_be_falsy(b));
+        break;
+      case Opcode::Select:
+      {
+        const Range c = get(ins.c);
+        const bool take_b = may_be_nonzero(a);
+        const bool take_c = may_be_zero(a);
+        r = take_b && take_c ? hull(b, c) : (take_b ? b : c);
+        break;
+      }
+      case Opcode::Input:
+      case Opcode::ErrorIf:
+      case Opcode::Call:
+        break; // handled above
+    }
+    put(ins.out, r);
+  }
+  if (!tape.outputs.empty())
+  {
+    const Range f = get(tape.outputs[0]);
+    // A NaN bound (which no rule should produce) must never pass for an enclosure.
+    const bool broken = std::isnan(f.v.lo) || std::isnan(f.v.hi);
+    result.value = (f.nan || broken) ? Interval::everything() : f.v;
+  }
+  return result;
+}
+
+} // namespace frep

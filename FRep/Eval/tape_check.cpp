@@ -1,0 +1,123 @@
+#include "Eval/tape_check.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace frep::eval
+{
+
+bool reads_a(Opcode op)
+{
+  return op != Opcode::Const && op != Opcode::Input && op != Opcode::Call;
+}
+
+bool reads_b(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Add:
+    case Opcode::Sub:
+    case Opcode::Mul:
+    case Opcode::Div:
+    case Opcode::Atan2:
+    case Opcode::Pow:
+    case Opcode::Fmod:
+    case Opcode::HfPow:
+    case Opcode::HfMod:
+    case Opcode::Max:
+    case Opcode::Min:
+    case Opcode::Union:
+    case Opcode::Intersect:
+    case Opcode::Eq:
+    case Opcode::Ne:
+    case Opcode::Lt:
+    case Opcode::Le:
+    case Opcode::Gt:
+    case Opcode::Ge:
+    case Opcode::And:
+    case Opcode::Or:
+    case Opcode::Select:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool reads_c(Opcode op)
+{
+  return op == Opcode::Select;
+}
+
+namespace
+{
+
+[[noreturn]] void fail(const char* who, const std::string& what)
+{
+  throw std::invalid_argument(std::string(who) + ": malformed tape: " + what);
+}
+
+} // namespace
+
+void check_tape(const Tape& tape, const char* who)
+{
+  const auto bad_slot = [&](std::uint32_t slot) { return slot >= tape.slot_count; };
+  for (std::size_t i = 0; i < tape.code.size(); ++i)
+  {
+    const Instruction& ins = tape.code[i];
+    const std::string at = "instruction " + std::to_string(i);
+    if (static_cast<unsigned>(ins.op) > static_cast<unsigned>(Opcode::Call))
+    {
+      fail(who, at + " has an unknown opcode");
+    }
+    const bool writes = ins.op != Opcode::ErrorIf && ins.op != Opcode::Call;
+    if ((writes && bad_slot(ins.out)) || (reads_a(ins.op) && bad_slot(ins.a)) ||
+        (reads_b(ins.op) && bad_slot(ins.b)) || (reads_c(ins.op) && bad_slot(ins.c)))
+    {
+      fail(who, at + " uses a slot beyond slot_count");
+    }
+    if (ins.op == Opcode::Input &&
+        (ins.index < 0 || static_cast<std::uint32_t>(ins.index) >= tape.input_count))
+    {
+      fail(who, at + " reads an input beyond input_count");
+    }
+    if (ins.op == Opcode::ErrorIf && ins.index <= 0)
+    {
+      fail(who, at + " raises a non-positive error id");
+    }
+    if (ins.op == Opcode::Call)
+    {
+      if (ins.index < 0 || static_cast<std::size_t>(ins.index) >= tape.calls.size())
+      {
+        fail(who, at + " calls a missing call site");
+      }
+      const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
+      if (!site.function)
+      {
+        fail(who, at + " calls a site without a function");
+      }
+      for (std::uint32_t slot : site.inputs)
+      {
+        if (bad_slot(slot))
+        {
+          fail(who, at + ": call input slot beyond slot_count");
+        }
+      }
+      for (std::uint32_t slot : site.outputs)
+      {
+        if (bad_slot(slot))
+        {
+          fail(who, at + ": call output slot beyond slot_count");
+        }
+      }
+    }
+  }
+  for (std::uint32_t slot : tape.outputs)
+  {
+    if (bad_slot(slot))
+    {
+      fail(who, "an output slot is beyond slot_count");
+    }
+  }
+}
+
+} // namespace frep::eval

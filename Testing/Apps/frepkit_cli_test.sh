@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# End-to-end checks of frepkit: every check prints PASS/FAIL; the script fails if any failed.
+# A crash (exit code >= 128, e.g. SIGSEGV/SIGABRT) always fails.
+#   frepkit_cli_test.sh FREPKIT SHARED_DIR SOURCE_DIR
+set -u
+frepkit=$1
+shared=$2
+source_dir=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+checks=0
+
+pass() { checks=$((checks + 1)); echo "PASS: $1"; }
+fail() { checks=$((checks + 1)); failures=$((failures + 1)); echo "FAIL: $1"; }
+
+# run NAME EXPECTED_CODE CMD... : runs CMD, captures stdout/stderr in $out/$err, checks the code.
+run() {
+  local name=$1 expected=$2
+  shift 2
+  "$@" >"$work/out" 2>"$work/err"
+  code=$?
+  out=$(cat "$work/out")
+  err=$(cat "$work/err")
+  if [ "$code" -ge 128 ]; then
+    fail "$name: crashed with code $code; stderr: $err"
+    return 1
+  fi
+  if [ "$code" -ne "$expected" ]; then
+    fail "$name: exit code $code, expected $expected; stderr: $err"
+    return 1
+  fi
+  pass "$name"
+}
+
+expect_in() { # NAME HAYSTACK NEEDLE
+  if [[ "$2" == *"$3"* ]]; then pass "$1"; else fail "$1: '$3' not in: $2"; fi
+}
+
+model() { printf '%s' "$2" >"$work/$1"; echo "$work/$1"; }
+
+sphere=$(model sphere.hf 'my_model(x[3], a[1]) { my_model = 5^2 - (x[1]^2 + x[2]^2 + x[3]^2); }')
+
+# --- help and usage
+run "help" 0 "$frepkit" --help
+run "eval --help" 0 "$frepkit" eval --help
+expect_in "eval help mentions --hfp-errors" "$out" "--hfp-errors"
+run "check --help" 0 "$frepkit" check --help
+run "no subcommand is a usage error" 1 "$frepkit"
+run "unknown option is a usage error" 1 "$frepkit" eval "$sphere" --no-such-option
+
+# --- check
+run "check ok" 0 "$frepkit" check "$sphere"
+expect_in "check lists the object" "$out" "my_model(x[3], a[1], s[1])"
+run "check missing file" 1 "$frepkit" check "$work/none.hf"
+expect_in "missing file message" "$err" "cannot open"
+prog="$shared/hyperfun/models/web__paulbourke.net/HF_prog.hf"
+run "check HF_prog" 0 "$frepkit" check "$prog"
+expect_in "HF_prog lists csgobj" "$out" "csgobj(x[3], a[1], s[1])"
+
+# --- eval values (exact %.17g)
+run "eval sphere" 0 bash -c "printf '0 0 0\n1 2 3\n' | '$frepkit' eval '$sphere'"
+expect_in "eval sphere value at origin" "$out" "25"
+expect_in "eval sphere value at 1,2,3" "$out" "11"
+[ "$(echo "$out" | wc -l)" -eq 2 ] && pass "one line per point" || fail "one line per point: $out"
+
+run "eval points file and output file" 0 bash -c \
+  "printf '0 0 0\n' >'$work/p.txt'; '$frepkit' eval '$sphere' --points '$work/p.txt' --output '$work/o.txt'"
+[ "$(cat "$work/o.txt")" = "25" ] && pass "output file content" || fail "output file content"
+ls "$work"/o.txt.tmp-* >/dev/null 2>&1 && fail "temporary output left behind" || pass "no temporary left"
+
+# The original's values for an external model, through the compiled path and the interpreter.
+tut="$shared/hyperfun/models/web__f-rep.org/tut_start_example1.hf"
+tut_expected="$shared/hyperfun/models/web__f-rep.org/tut_start_example1.expected.txt"
+awk '{print $1, $2, $3}' "$tut_expected" >"$work/tut_points"
+awk '{print $4}' "$tut_expected" >"$work/tut_values"
+run "eval tut_start_example1" 0 "$frepkit" eval "$tut" --points "$work/tut_points" --output "$work/tut_out"
+if cmp -s "$work/tut_out" "$work/tut_values"; then pass "tut_start_example1 values equal the original's"; else fail "tut_start_example1 values differ"; fi
+run "eval tut_start_example1 --interpreter" 0 "$frepkit" eval "$tut" --interpreter --points "$work/tut_points" --output "$work/tut_out2"
+if cmp -s "$work/tut_out2" "$work/tut_values"; then pass "interpreter values equal the original's"; else fail "interpreter values differ"; fi
+
+# object selection and parameters
+run "eval object by name, case-insensitive" 0 bash -c "echo '0 0 0' | '$frepkit' eval '$prog' --object CSGobj"
+run "eval unknown object" 1 bash -c "echo '0 0 0' | '$frepkit' eval '$prog' --object nosuch"
+expect_in "unknown object lists objects" "$err" "csgobj"
+params=$(model params.hf 'my_model(x[1], a[2]) { my_model = a[1] * 10 + a[2] + x[1]; }')
+run "eval -a" 0 bash -c "echo '0.5' | '$frepkit' eval '$params' -a 2,3"
+[ "$out" = "23.5" ] && pass "parameters applied" || fail "parameters applied: $out"
+run "eval missing parameters are 0" 0 bash -c "echo '0.5' | '$frepkit' eval '$params' -a 2"
+[ "$out" = "20.5" ] && pass "missing parameter is 0" || fail "missing parameter is 0: $out"
+
+# attributes
+attr=$(model attr.hf 'my_model(x[1], a[1], s[2]) { s[1] = x[1] * 2; s[2] = 7; my_model = x[1]; }')
+run "eval --attributes" 0 bash -c "echo '1.5' | '$frepkit' eval '$attr' --attributes"
+[ "$out" = "1.5 3 7" ] && pass "attributes printed" || fail "attributes printed: $out"
+
+# run-time errors: per point, with the original's message and position; --hfp-errors
+div=$(model div.hf 'my_model(x[1], a[1])
+{
+  my_model = 1 / x[1];
+}')
+run "eval run-time error" 0 bash -c "printf '2\n0\n4\n' | '$frepkit' eval '$div'"
+expect_in "error line" "$out" "error: $div:3:16: Division by zero"
+expect_in "value after error" "$out" "0.25"
+run "eval --hfp-errors" 0 bash -c "printf '2\n0\n4\n' | '$frepkit' eval '$div' --hfp-errors"
+[ "$out" = "$(printf '0.5\n0.5\n0.25')" ] && pass "hfp-errors repeats the previous value" || fail "hfp-errors: $out"
+run "eval --interpreter error" 0 bash -c "printf '0\n' | '$frepkit' eval '$div' --interpreter"
+expect_in "interpreter error line" "$out" "Division by zero"
+
+# --- bad input: clear message with a location, exit 1, never a crash
+bad() { # NAME TEXT NEEDLE
+  local f
+  f=$(model "bad_$RANDOM.hf" "$2")
+  run "bad model: $1" 1 "$frepkit" check "$f"
+  expect_in "bad model: $1 names file:line:col" "$err" "$f:"
+  [ -n "$3" ] && expect_in "bad model: $1 message" "$err" "$3"
+}
+bad "missing semicolon" 'my_model(x[3], a[1]) { my_model = 1 }' ""
+bad "unknown function" 'my_model(x[3], a[1]) { my_model = hfNoSuch(x); }' ""
+bad "wrong arity" 'my_model(x[3], a[1]) { array c[3]; c = [0,0,0]; my_model = hfSphere(x, c); }' ""
+bad "unassigned name" 'my_model(x[3], a[1]) { my_model = q; }' "Unassigned"
+bad "negative array size" 'my_model(x[3], a[1]) { array v[-3]; my_model = 1; }' ""
+bad "huge array size" 'my_model(x[3], a[1]) { array v[1000000000000]; my_model = 1; }' ""
+bad "huge x size" 'my_model(x[99999999999], a[1]) { my_model = 1; }' ""
+bad "two errors reported" 'my_model(x[3], a[1]) { q = (1 + ; w = 2 * ; my_model = 1; }' ""
+[ "$(grep -c 'error:' "$work/err")" -ge 2 ] && pass "several diagnostics reported" || fail "several diagnostics reported: $err"
+empty=$(model empty.hf '')
+run "empty file" 1 "$frepkit" eval "$empty"
+expect_in "empty file message" "$err" "no object"
+head -c 4096 /dev/urandom >"$work/garbage.hf"
+run "binary garbage" 1 "$frepkit" check "$work/garbage.hf"
+awk 'BEGIN { printf "my_model(x[3], a[1]) { my_model = "; for (i = 0; i < 100000; i++) printf "("; printf "1"; for (i = 0; i < 100000; i++) printf ")"; print "; }" }' >"$work/deep.hf"
+run "deep nesting" 1 "$frepkit" check "$work/deep.hf"
+expect_in "deep nesting message" "$err" "Nesting too deep"
+run "points with text" 1 bash -c "printf '0 0 0\n1 abc 3\n' | '$frepkit' eval '$sphere'"
+expect_in "points error names the line" "$err" "<stdin>:2:"
+run "points with a wrong count" 1 bash -c "printf '0 0\n' | '$frepkit' eval '$sphere'"
+expect_in "points count message" "$err" "expected 3 coordinates"
+run "missing points file" 1 "$frepkit" eval "$sphere" --points "$work/nope.txt"
+crlf=$(printf 'my_model(x[3], a[1])\r\n{\r\n  my_model = 1;\r\n}\r\n' >"$work/crlf.hf"; echo "$work/crlf.hf")
+run "CRLF accepted" 0 bash -c "echo '0 0 0' | '$frepkit' eval '$crlf'"
+
+echo "$checks checks, $failures failed"
+[ "$failures" -eq 0 ]

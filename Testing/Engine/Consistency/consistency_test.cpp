@@ -1,0 +1,281 @@
+// Cross-checks of the compiled evaluators on every model of the conformance suite and the
+// external models (each with the a[] values its reference points use):
+//  - BatchEvaluator (1 and 2 threads, SSE2 and the wide build) == PointEvaluator, bit for bit,
+//    including NaN and the error id, on the reference points and on random points around them;
+//  - IntervalEvaluator: on random boxes, every successfully evaluated sample lies inside the
+//    enclosure (unless the enclosure is the whole line), and may_fail is set when a sample
+//    failed;
+//  - GradientEvaluator's F equals the point value.
+#include "conformance_case.h"
+
+#include "Compiler/model.h"
+#include "Eval/batch_evaluator.h"
+#include "Eval/gradient_evaluator.h"
+#include "Eval/interval_evaluator.h"
+#include "Eval/point_evaluator.h"
+#include "Language/parser.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <random>
+
+namespace
+{
+
+namespace fc = frep::conformance;
+
+bool same_bits(double a, double b)
+{
+  if (std::isnan(a) && std::isnan(b))
+  {
+    return true;
+  }
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+std::vector<fc::ConformanceCase> all_cases()
+{
+  const std::filesystem::path shared = FREPKIT_SHARED_DIR;
+  std::vector<fc::ConformanceCase> cases =
+    fc::load_conformance_suite(shared / "hyperfun" / "conformance");
+  std::vector<fc::ConformanceCase> models = fc::load_model_cases(shared / "hyperfun" / "models");
+  cases.insert(cases.end(), models.begin(), models.end());
+  return cases;
+}
+
+/// One tape to check: a case's program with one of its a[] vectors, and its reference points.
+struct Subject
+{
+  std::string id;
+  std::shared_ptr<const frep::Tape> tape;
+  std::vector<std::vector<double>> points; // point-major
+};
+
+std::vector<Subject> subjects()
+{
+  std::vector<Subject> result;
+  for (const fc::ConformanceCase& c : all_cases())
+  {
+    if (c.parse.outcome != fc::ParseOutcome::Ok || c.points.empty())
+    {
+      continue;
+    }
+    frep::ParseOptions options;
+    options.accept_carriage_return = false;
+    const frep::ParseResult parsed = frep::parse_program(c.source, c.program_path.string(), options);
+    if (!parsed.ok() || parsed.program->objects.empty())
+    {
+      continue;
+    }
+    const int object =
+      frep::ast::select_object(*parsed.program, c.object, frep::ast::NameMatch::Exact);
+    const frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, object);
+    if (!compiled.model)
+    {
+      ADD_FAILURE() << c.id() << ": does not compile";
+      continue;
+    }
+    std::map<std::vector<double>, Subject> by_parameters;
+    for (const fc::CasePoint& p : c.points)
+    {
+      Subject& s = by_parameters[p.a];
+      if (!s.tape)
+      {
+        s.id = c.id();
+        s.tape = compiled.model->tape(p.a);
+      }
+      s.points.push_back(p.x);
+    }
+    for (auto& [a, s] : by_parameters)
+    {
+      result.push_back(std::move(s));
+    }
+  }
+  return result;
+}
+
+const std::vector<Subject>& cached_subjects()
+{
+  static const std::vector<Subject> all = subjects();
+  return all;
+}
+
+/// The reference points plus random points in their bounding box grown by 1 on each side.
+std::vector<std::vector<double>> probe_points(const Subject& s, int random_count, std::mt19937_64& rng)
+{
+  std::vector<std::vector<double>> points = s.points;
+  const std::size_t n = s.tape->input_count;
+  std::vector<double> lo(n, -2), hi(n, 2);
+  for (const auto& p : s.points)
+  {
+    for (std::size_t k = 0; k < n && k < p.size(); ++k)
+    {
+      if (std::isfinite(p[k]))
+      {
+        lo[k] = std::min(lo[k], p[k] - 1);
+        hi[k] = std::max(hi[k], p[k] + 1);
+      }
+    }
+  }
+  for (int i = 0; i < random_count; ++i)
+  {
+    std::vector<double> p(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      p[k] = std::uniform_real_distribution<double>(lo[k], hi[k])(rng);
+    }
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+TEST(Consistency, EveryModelHasSubjects)
+{
+  EXPECT_GT(cached_subjects().size(), 200u);
+}
+
+TEST(Consistency, BatchEqualsPointBitForBit)
+{
+  std::mt19937_64 rng(7);
+  std::size_t compared = 0;
+  for (const Subject& s : cached_subjects())
+  {
+    const std::vector<std::vector<double>> points = probe_points(s, 300, rng);
+    const std::size_t n = s.tape->input_count;
+    const std::size_t outputs = s.tape->outputs.size();
+    std::vector<std::vector<double>> columns(n, std::vector<double>(points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        columns[k][i] = k < points[i].size() ? points[i][k] : 0.0;
+      }
+    }
+    std::vector<const double*> inputs;
+    for (const auto& c : columns)
+    {
+      inputs.push_back(c.data());
+    }
+    frep::PointEvaluator point(s.tape);
+    std::vector<double> expected_value(points.size());
+    std::vector<std::uint32_t> expected_error(points.size());
+    std::vector<double> out(outputs);
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        x[k] = columns[k][i];
+      }
+      expected_error[i] = static_cast<std::uint32_t>(point.evaluate(x, out));
+      expected_value[i] = outputs ? out[0] : std::nan("");
+    }
+    for (const int threads : { 1, 2 })
+    {
+      for (const bool wide : { false, true })
+      {
+        frep::BatchOptions options;
+        options.threads = threads;
+        options.wide_simd = wide;
+        options.block_size = 64;
+        frep::BatchEvaluator batch(s.tape, options);
+        std::vector<double> values(points.size());
+        std::vector<std::uint32_t> errors(points.size());
+        batch.evaluate(inputs, points.size(), values.data(), errors.data());
+        for (std::size_t i = 0; i < points.size(); ++i)
+        {
+          ASSERT_TRUE(same_bits(values[i], expected_value[i]))
+            << s.id << " point " << i << " threads " << threads << " wide " << wide << ": batch "
+            << values[i] << " point " << expected_value[i];
+          ASSERT_EQ(errors[i], expected_error[i]) << s.id << " point " << i;
+        }
+        compared += points.size();
+      }
+    }
+  }
+  std::printf("[consistency] %zu batch values compared with the point evaluator\n", compared);
+}
+
+TEST(Consistency, IntervalsEncloseSampledValues)
+{
+  std::mt19937_64 rng(11);
+  std::size_t samples = 0, boxes = 0, decided = 0;
+  for (const Subject& s : cached_subjects())
+  {
+    const std::size_t n = s.tape->input_count;
+    frep::IntervalEvaluator interval(s.tape);
+    frep::PointEvaluator point(s.tape);
+    const std::vector<std::vector<double>> centres = probe_points(s, 10, rng);
+    std::vector<double> x(n), out(s.tape->outputs.size());
+    for (const auto& centre : centres)
+    {
+      for (const double size : { 1e-3, 0.1, 1.0, 5.0 })
+      {
+        std::vector<frep::Interval> box(n);
+        for (std::size_t k = 0; k < n; ++k)
+        {
+          const double c = k < centre.size() ? centre[k] : 0.0;
+          const double r = std::uniform_real_distribution<double>(0, size)(rng);
+          box[k] = { c - r, c + r };
+        }
+        const frep::IntervalResult result = interval.evaluate(box);
+        ++boxes;
+        const bool whole = std::isinf(result.value.lo) && std::isinf(result.value.hi);
+        decided += (result.value.lo > 0 || result.value.hi < 0) ? 1 : 0;
+        for (int i = 0; i < 40; ++i)
+        {
+          for (std::size_t k = 0; k < n; ++k)
+          {
+            // corners are where monotone rules are tight: sample them too
+            const double t = i < 2 ? i : std::uniform_real_distribution<double>(0, 1)(rng);
+            // clamped: lo + t*(hi-lo) may round past hi
+            x[k] = std::clamp(box[k].lo + t * (box[k].hi - box[k].lo), box[k].lo, box[k].hi);
+          }
+          const int error = point.evaluate(x, out);
+          ++samples;
+          if (error != 0)
+          {
+            EXPECT_TRUE(result.may_fail) << s.id << ": a point in the box failed";
+            continue;
+          }
+          if (whole || std::isnan(out[0]))
+          {
+            continue;
+          }
+          ASSERT_TRUE(result.value.contains(out[0]))
+            << s.id << ": value " << out[0] << " outside [" << result.value.lo << ", "
+            << result.value.hi << "]";
+        }
+      }
+    }
+  }
+  std::printf("[consistency] %zu samples in %zu boxes inside their enclosures; %zu boxes decided\n",
+    samples, boxes, decided);
+}
+
+TEST(Consistency, GradientValueEqualsPointValue)
+{
+  std::mt19937_64 rng(13);
+  for (const Subject& s : cached_subjects())
+  {
+    frep::GradientEvaluator gradient(s.tape);
+    frep::PointEvaluator point(s.tape);
+    std::vector<double> g(s.tape->input_count);
+    for (const auto& p : probe_points(s, 20, rng))
+    {
+      std::vector<double> x(s.tape->input_count, 0.0);
+      std::copy_n(p.begin(), std::min(p.size(), x.size()), x.begin());
+      const double expected = point.value(x);
+      const double value = gradient.evaluate(x, g);
+      ASSERT_TRUE(same_bits(value, expected)) << s.id << ": gradient evaluator's F " << value
+                                              << " != point " << expected;
+    }
+  }
+}
+
+} // namespace

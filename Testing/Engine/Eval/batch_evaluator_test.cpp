@@ -1,0 +1,310 @@
+#include "Eval/batch_evaluator.h"
+#include "Eval/point_evaluator.h"
+#include "Eval/thread_pool.h"
+
+#include "eval_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace frep::test
+{
+namespace
+{
+
+/// Random structure-of-arrays points, including every special value in every operand.
+struct Points
+{
+  std::size_t count;
+  std::vector<std::vector<double>> columns;
+  std::vector<const double*> pointers;
+
+  Points(std::size_t inputs, std::size_t n, std::uint64_t seed)
+    : count(n)
+    , columns(inputs, std::vector<double>(n))
+  {
+    std::mt19937_64 rng(seed);
+    const auto& s = special_values();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      for (std::size_t k = 0; k < inputs; ++k)
+      {
+        // The first points walk through all pairs of special values.
+        const std::size_t pair = i / (k == 0 ? 1 : s.size());
+        columns[k][i] = i < s.size() * s.size() ? s[pair % s.size()] : random_value(rng);
+      }
+    }
+    for (auto& c : columns)
+    {
+      pointers.push_back(c.data());
+    }
+  }
+  std::vector<double> point(std::size_t i) const
+  {
+    std::vector<double> p;
+    for (const auto& c : columns)
+    {
+      p.push_back(c[i]);
+    }
+    return p;
+  }
+};
+
+/// Batch against point on every point: values, errors, attributes, failure count.
+void expect_batch_equals_point(const std::shared_ptr<const Tape>& tape,
+  const Points& pts,
+  const BatchOptions& options,
+  const std::string& what)
+{
+  BatchEvaluator batch(tape, options);
+  PointEvaluator point(tape);
+  const std::size_t attrs = tape->outputs.size() - 1;
+  std::vector<double> values(pts.count, 12345.0);
+  std::vector<std::uint32_t> errors(pts.count, 77);
+  std::vector<std::vector<double>> attr(attrs, std::vector<double>(pts.count));
+  std::vector<double*> attr_ptr;
+  for (auto& a : attr)
+  {
+    attr_ptr.push_back(a.data());
+  }
+  const std::size_t failures =
+    batch.evaluate(pts.pointers, pts.count, values.data(), errors.data(), attr_ptr);
+  std::size_t expected_failures = 0;
+  std::vector<double> out(tape->outputs.size());
+  for (std::size_t i = 0; i < pts.count; ++i)
+  {
+    const auto p = pts.point(i);
+    const int error = point.evaluate(p, out);
+    expected_failures += error != 0;
+    ASSERT_EQ(errors[i], static_cast<std::uint32_t>(error)) << what << " point " << i;
+    ASSERT_TRUE(same_bits(values[i], out[0]))
+      << what << " point " << i << " (" << p[0] << ", " << p[1] << ", " << p[2] << "): batch "
+      << values[i] << " point " << out[0];
+    for (std::size_t j = 0; j < attrs; ++j)
+    {
+      ASSERT_TRUE(same_bits(attr[j][i], out[j + 1])) << what << " attribute " << j;
+    }
+  }
+  EXPECT_EQ(failures, expected_failures) << what;
+}
+
+std::vector<BatchOptions> option_sets()
+{
+  std::vector<BatchOptions> sets;
+  for (int threads : { 1, 2 })
+  {
+    for (bool wide : { true, false })
+    {
+      BatchOptions o;
+      o.threads = threads;
+      o.wide_simd = wide;
+      sets.push_back(o);
+    }
+  }
+  BatchOptions odd;
+  odd.threads = 2;
+  odd.block_size = 7; // blocks that are not a multiple of any vector width
+  sets.push_back(odd);
+  return sets;
+}
+
+std::string describe(const BatchOptions& o)
+{
+  return "threads=" + std::to_string(o.threads) + " block=" + std::to_string(o.block_size) +
+         (o.wide_simd ? " avx2-if-present" : " sse2");
+}
+
+TEST(BatchEvaluator, EveryOpcodeEqualsPointBitForBit)
+{
+  const Points pts(3, 3001, 11); // odd count: the last block is partial
+  for (const OpInfo& info : value_ops())
+  {
+    for (const BatchOptions& o : option_sets())
+    {
+      expect_batch_equals_point(single_op_tape(info.op), pts, o, info.name + (" " + describe(o)));
+    }
+  }
+}
+
+TEST(BatchEvaluator, HfPowIntUnrolledAndGenericExponents)
+{
+  const Points pts(3, 1001, 12);
+  for (int n = -20; n <= 20; ++n)
+  {
+    for (const BatchOptions& o : option_sets())
+    {
+      expect_batch_equals_point(
+        single_op_tape(Opcode::HfPowInt, n), pts, o, "HfPowInt " + std::to_string(n));
+    }
+  }
+}
+
+// Output slot reused as an operand slot, as a register allocator would do.
+TEST(BatchEvaluator, InPlaceInstructions)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0);
+  const auto y = b.input(1);
+  b.input(2);
+  b.tape.code.push_back({ Opcode::Union, x, x, y, 0, 0, 0 });
+  b.tape.code.push_back({ Opcode::HfPowInt, y, y, 0, 0, 3, 0 });
+  b.tape.code.push_back({ Opcode::Select, x, y, x, y, 0, 0 });
+  b.tape.code.push_back({ Opcode::Mul, x, x, x, 0, 0, 0 });
+  const Points pts(3, 999, 13);
+  for (const BatchOptions& o : option_sets())
+  {
+    expect_batch_equals_point(b.finish({ x, y }), pts, o, "in place " + describe(o));
+  }
+}
+
+// A model with errors, attributes and an opaque call.
+std::shared_ptr<const Tape> model_tape(std::shared_ptr<const OpaqueFunction> fn)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0);
+  const auto y = b.input(1);
+  const auto z = b.input(2);
+  const auto zero = b.constant(0);
+  b.error_if(b.op(Opcode::Lt, z, zero)); // id 1
+  const auto r2 = b.op(Opcode::Add, b.op(Opcode::Square, x), b.op(Opcode::HfPowInt, y, 0, 0, 2));
+  const auto sphere = b.op(Opcode::Sub, b.constant(4), r2);
+  b.error_if(b.op(Opcode::Gt, r2, b.constant(100))); // id 2
+  const std::uint32_t o0 = b.tape.slot_count++;
+  const std::uint32_t o1 = b.tape.slot_count++;
+  b.tape.calls.push_back({ std::move(fn), { x, y }, { o0, o1 } }); // error 1 when x > 5
+  b.tape.code.push_back({ Opcode::Call, 0, 0, 0, 0, 0, 0 });
+  const auto f = b.op(Opcode::Union, sphere, b.op(Opcode::Mul, o1, z));
+  const auto s1 = b.op(Opcode::Sqrt, b.op(Opcode::Abs, o0));
+  return b.finish({ f, s1, r2 });
+}
+
+TEST(BatchEvaluator, ErrorsAttributesAndCallsEqualPoint)
+{
+  auto fn = std::make_shared<TestFunction>();
+  const auto tape = model_tape(fn);
+  const Points pts(3, 5003, 14);
+  for (const BatchOptions& o : option_sets())
+  {
+    expect_batch_equals_point(tape, pts, o, "model " + describe(o));
+  }
+}
+
+TEST(BatchEvaluator, ScratchIsPerThreadNotPerPoint)
+{
+  auto fn = std::make_shared<TestFunction>();
+  BatchOptions o;
+  o.threads = 2;
+  BatchEvaluator batch(model_tape(fn), o);
+  const Points pts(3, 4000, 15);
+  std::vector<double> v(pts.count);
+  batch.evaluate(pts.pointers, pts.count, v.data());
+  batch.evaluate(pts.pointers, pts.count, v.data());
+  EXPECT_GE(fn->scratches.load(), 1);
+  EXPECT_LE(fn->scratches.load(), 2);
+}
+
+TEST(BatchEvaluator, FailureCountAndNaN)
+{
+  TapeBuilder b(1);
+  const auto x = b.input(0);
+  b.error_if(b.op(Opcode::Lt, x, b.constant(0)));
+  const auto f = b.op(Opcode::Sqrt, x);
+  BatchOptions o;
+  o.threads = 2;
+  o.block_size = 16;
+  BatchEvaluator batch(b.finish({ f }), o);
+  std::vector<double> in(1001);
+  for (std::size_t i = 0; i < in.size(); ++i)
+  {
+    in[i] = (i % 3 == 0) ? -1.0 : static_cast<double>(i);
+  }
+  const double* cols[1] = { in.data() };
+  std::vector<double> v(in.size());
+  std::vector<std::uint32_t> e(in.size());
+  EXPECT_EQ(batch.evaluate(cols, in.size(), v.data(), e.data()), 334u);
+  for (std::size_t i = 0; i < in.size(); ++i)
+  {
+    if (i % 3 == 0)
+    {
+      EXPECT_EQ(e[i], 1u);
+      EXPECT_TRUE(std::isnan(v[i]));
+    }
+    else
+    {
+      EXPECT_EQ(e[i], 0u);
+      EXPECT_EQ(v[i], std::sqrt(static_cast<double>(i)));
+    }
+  }
+  EXPECT_EQ(batch.evaluate(cols, 0, v.data()), 0u);
+}
+
+TEST(BatchEvaluator, SharedPoolAndOptions)
+{
+  auto pool = std::make_shared<ThreadPool>(2);
+  BatchOptions o;
+  o.pool = pool;
+  o.threads = 7; // ignored: the pool decides
+  BatchEvaluator a(single_op_tape(Opcode::Add), o);
+  BatchEvaluator c(single_op_tape(Opcode::Mul), o);
+  EXPECT_EQ(a.threads(), 2);
+  const Points pts(3, 700, 16);
+  std::vector<double> va(pts.count);
+  std::vector<double> vc(pts.count);
+  a.evaluate(pts.pointers, pts.count, va.data());
+  c.evaluate(pts.pointers, pts.count, vc.data());
+  for (std::size_t i = 0; i < pts.count; ++i)
+  {
+    ASSERT_TRUE(same_bits(va[i], pts.columns[0][i] + pts.columns[1][i]));
+    ASSERT_TRUE(same_bits(vc[i], pts.columns[0][i] * pts.columns[1][i]));
+  }
+  BatchOptions bad;
+  bad.block_size = 0;
+  EXPECT_THROW(BatchEvaluator(single_op_tape(Opcode::Add), bad), std::invalid_argument);
+  BatchOptions single;
+  single.threads = 1;
+  BatchEvaluator one(single_op_tape(Opcode::Add), single);
+  EXPECT_EQ(one.threads(), 1);
+}
+
+// An exception thrown by an opaque function inside a worker reaches the caller.
+class ThrowingFunction : public OpaqueFunction
+{
+public:
+  int evaluate(Scratch*, std::span<const double> in, std::span<double> out) const override
+  {
+    if (in[0] > 900)
+    {
+      throw std::runtime_error("opaque failure");
+    }
+    out[0] = in[0];
+    return 0;
+  }
+};
+
+TEST(BatchEvaluator, ExceptionsFromWorkersPropagate)
+{
+  TapeBuilder b(1);
+  const auto x = b.input(0);
+  const std::uint32_t o = b.tape.slot_count++;
+  b.tape.calls.push_back({ std::make_shared<ThrowingFunction>(), { x }, { o } });
+  b.tape.code.push_back({ Opcode::Call, 0, 0, 0, 0, 0, 0 });
+  BatchOptions opt;
+  opt.threads = 2;
+  opt.block_size = 8;
+  BatchEvaluator batch(b.finish({ o }), opt);
+  std::vector<double> in(1000);
+  for (std::size_t i = 0; i < in.size(); ++i)
+  {
+    in[i] = static_cast<double>(i);
+  }
+  const double* cols[1] = { in.data() };
+  std::vector<double> v(in.size());
+  EXPECT_THROW(batch.evaluate(cols, in.size(), v.data()), std::runtime_error);
+  EXPECT_EQ(batch.evaluate(cols, 900, v.data()), 0u); // still usable
+  EXPECT_EQ(v[899], 899.0);
+}
+
+} // namespace
+} // namespace frep::test

@@ -13,7 +13,7 @@ namespace frep::semantics
 
 /// Result of a pure opcode (not Const, Input, ErrorIf or Call) on operand values a, b, c;
 /// `index` is the HfPowInt exponent.
-inline double evaluate_op(Opcode op, double a, double b, double c, int index)
+[[gnu::always_inline]] inline double evaluate_op(Opcode op, double a, double b, double c, int index)
 {
   switch (op)
   {

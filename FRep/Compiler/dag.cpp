@@ -254,8 +254,85 @@ NodeId Dag::unary(Opcode op, NodeId a)
   return fold_or_intern(n);
 }
 
+bool Dag::match_r_function(Opcode op, NodeId a, NodeId b, NodeId& result)
+{
+  // Only the exact formula with the 0*u*v term is the R-function op: without it an infinite
+  // operand gives inf, not NaN. Every step below is bitwise commutative, so operand order
+  // inside the pattern does not matter (NaN payloads aside).
+  const Node& sum = nodes_[a];
+  if (sum.op != Opcode::Add || nodes_[b].op != Opcode::Sqrt)
+  {
+    return false;
+  }
+  const NodeId u = sum.a;
+  const NodeId v = sum.b;
+  const auto same_pair = [](NodeId p, NodeId q, NodeId x, NodeId y)
+  { return (p == x && q == y) || (p == y && q == x); };
+  NodeId inner = nodes_[b].a;
+  if (nodes_[inner].op == Opcode::Abs)
+  {
+    inner = nodes_[inner].a;
+  }
+  const Node& diff = nodes_[inner];
+  if (diff.op != Opcode::Sub)
+  {
+    return false;
+  }
+  const Node& squares = nodes_[diff.a];
+  if (squares.op != Opcode::Add || nodes_[squares.a].op != Opcode::Square ||
+    nodes_[squares.b].op != Opcode::Square ||
+    !same_pair(nodes_[squares.a].a, nodes_[squares.b].a, u, v))
+  {
+    return false;
+  }
+  // (0*x)*y with {x, y} = {u, v}, in any nesting of the two multiplications.
+  const Node& outer = nodes_[diff.b];
+  if (outer.op != Opcode::Mul)
+  {
+    return false;
+  }
+  const auto zero_times = [&](NodeId id, NodeId& other)
+  {
+    const Node& m = nodes_[id];
+    if (m.op != Opcode::Mul)
+    {
+      return false;
+    }
+    const auto is_plus_zero = [&](NodeId k)
+    { return is_constant(k) && same_bits(constant_value(k), 0.0); };
+    if (is_plus_zero(m.a))
+    {
+      other = m.b;
+      return true;
+    }
+    if (is_plus_zero(m.b))
+    {
+      other = m.a;
+      return true;
+    }
+    return false;
+  };
+  NodeId x = 0;
+  const bool matched = (zero_times(outer.a, x) && same_pair(x, outer.b, u, v)) ||
+    (zero_times(outer.b, x) && same_pair(x, outer.a, u, v));
+  if (!matched)
+  {
+    return false;
+  }
+  result = binary(op == Opcode::Sub ? Opcode::Intersect : Opcode::Union, u, v);
+  return true;
+}
+
 NodeId Dag::binary(Opcode op, NodeId a, NodeId b)
 {
+  if (op == Opcode::Sub || op == Opcode::Add)
+  {
+    NodeId r = 0;
+    if (match_r_function(op, a, b, r))
+    {
+      return r;
+    }
+  }
   auto is_const_bits = [this](NodeId id, double v)
   { return is_constant(id) && same_bits(constant_value(id), v); };
   switch (op)

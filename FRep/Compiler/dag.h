@@ -100,6 +100,10 @@ private:
   };
 
   NodeId intern(Node node);
+  /// Recognises the original's R-function formula written out (hfBlock's, with the explicit
+  /// 2*ALPHA*u*v = (0*u)*v term): (u + v) -/+ sqrt[abs](u*u + v*v - (0*u)*v). Returns the
+  /// Intersect/Union node, or no node (0 with ok = false).
+  bool match_r_function(Opcode op, NodeId a, NodeId b, NodeId& result);
   NodeId fold_or_intern(Node node);
   bool compute_never_negative(const Node& n) const;
   bool compute_boolean(const Node& n) const;

@@ -447,3 +447,52 @@ TEST(CompilerModel, TwoHundredSphereUnionCompilesSmall)
 
 } // namespace
 } // namespace frep
+
+namespace frep
+{
+namespace
+{
+
+std::size_t count_op(const Tape& tape, Opcode op)
+{
+  return static_cast<std::size_t>(std::count_if(tape.code.begin(), tape.code.end(),
+    [op](const Instruction& ins) { return ins.op == op; }));
+}
+
+TEST(CompilerDag, RecognisesTheWrittenOutRFunctionOfHfBlock)
+{
+  // hfBlock spells the R-intersection out, 2*ALPHA*u*v term included: the compiler turns it
+  // into Intersect nodes (faster, and tight under interval evaluation), bit for bit.
+  auto model = compile_text("my_model(x[3], a[1]) { array v[3]; v = [-1, -2, -3];\n"
+                            "  my_model = hfBlock(x, v, 2, 4, 6) | (0 - x[1]); }");
+  ASSERT_TRUE(model);
+  auto tape = model->tape();
+  EXPECT_EQ(count_op(*tape, Opcode::Intersect), 2u) << tape->dump();
+  EXPECT_EQ(count_op(*tape, Opcode::Union), 1u) << tape->dump();
+  EXPECT_EQ(count_op(*tape, Opcode::Sqrt), 0u) << tape->dump();
+  PointEvaluator pe(tape);
+  Interpreter in(model->program(), model->object_index());
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const std::vector<double>& p : std::vector<std::vector<double>>{
+         { 0, 0, 0 }, { 0.5, -1, 2 }, { 1, 2, 3 }, { -7, 3, 1e300 }, { inf, 0, 0 } })
+  {
+    const double expected = in.evaluate(p).value;
+    const double got = pe.value(p);
+    EXPECT_TRUE(same_bits(got, expected) || (std::isnan(got) && std::isnan(expected)))
+      << p[0] << " " << p[1] << " " << p[2] << ": " << got << " vs " << expected;
+  }
+}
+
+TEST(CompilerDag, KeepsAnRFunctionWrittenWithoutTheAlphaTerm)
+{
+  // u + v - sqrt(u*u + v*v) differs from the original's & for infinite operands (inf, not NaN):
+  // it must stay as written.
+  auto model = compile_text(
+    "my_model(x[2], a[1]) { my_model = x[1] + x[2] - sqrt(x[1]*x[1] + x[2]*x[2]); }");
+  ASSERT_TRUE(model);
+  auto tape = model->tape();
+  EXPECT_EQ(count_op(*tape, Opcode::Intersect), 0u) << tape->dump();
+}
+
+} // namespace
+} // namespace frep

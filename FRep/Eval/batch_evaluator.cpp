@@ -1,6 +1,7 @@
 #include "Eval/batch_evaluator.h"
 
 #include "Eval/batch_kernel.h"
+#include "Eval/batch_program.h"
 #include "Eval/tape_check.h"
 #include "Eval/thread_pool.h"
 
@@ -37,14 +38,20 @@ struct AlignedDoubles
 struct Participant
 {
   AlignedDoubles regs;
+  std::vector<const double*> rows; // where each slot's lanes are (see eval::Block::rows)
   std::vector<std::uint32_t> errors;
   eval::CallState calls;
   std::size_t failures = 0;
 
   Participant(const Tape& tape, int block)
     : regs(std::max<std::size_t>(tape.slot_count, 1) * static_cast<std::size_t>(block))
+    , rows(std::max<std::size_t>(tape.slot_count, 1))
     , errors(static_cast<std::size_t>(block), 0)
   {
+    for (std::size_t s = 0; s < rows.size(); ++s)
+    {
+      rows[s] = regs.data.get() + s * static_cast<std::size_t>(block);
+    }
     std::size_t widest_in = 0;
     std::size_t widest_out = 0;
     for (const CallSite& site : tape.calls)
@@ -63,6 +70,7 @@ struct Participant
 struct BatchEvaluator::Impl
 {
   std::shared_ptr<const Tape> tape;
+  eval::BatchProgram program;
   std::shared_ptr<ThreadPool> pool;
   int block = 256;
   bool wide = true;
@@ -81,6 +89,7 @@ BatchEvaluator::BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOpti
     throw std::invalid_argument("BatchEvaluator: block_size must be positive");
   }
   eval::check_tape(*tape, "BatchEvaluator");
+  impl_->program = eval::make_batch_program(*tape);
   impl_->tape = std::move(tape);
   impl_->pool = options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
   impl_->block = options.block_size;
@@ -140,41 +149,52 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
     std::fill(p.errors.begin(), p.errors.begin() + n, 0u);
     eval::Block blk;
     blk.regs = p.regs.data.get();
+    blk.rows = p.rows.data();
     blk.errors = p.errors.data();
     blk.n = n;
     blk.stride = im.block;
     blk.inputs = inputs.data();
     blk.base = base;
-    eval::run_block(tape, blk, p.calls, im.wide);
+    eval::run_block(tape, im.program, blk, p.calls, im.wide);
 
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     const std::uint32_t* err = p.errors.data();
-    const auto row = [&](std::uint32_t slot_index)
-    { return p.regs.data.get() + static_cast<std::size_t>(slot_index) * block; };
+    const auto row = [&](std::uint32_t slot_index) { return p.rows[slot_index]; };
     std::size_t failed = 0;
     for (int i = 0; i < n; ++i)
     {
       failed += err[i] != 0;
     }
     p.failures += failed;
+    // Copy an output row out; lanes that failed read NaN (the common case: none failed).
+    const auto copy_out = [&](const double* source, double* target)
+    {
+      if (source == nullptr)
+      {
+        std::fill(target, target + n, nan);
+      }
+      else if (failed == 0)
+      {
+        std::copy(source, source + n, target);
+      }
+      else
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          const double v = source[i];
+          target[i] = err[i] != 0 ? nan : v;
+        }
+      }
+    };
     if (values)
     {
-      const double* v = tape.outputs.empty() ? nullptr : row(tape.outputs[0]);
-      for (int i = 0; i < n; ++i)
-      {
-        values[base + i] = (v == nullptr || err[i] != 0) ? nan : v[i];
-      }
+      copy_out(tape.outputs.empty() ? nullptr : row(tape.outputs[0]), values + base);
     }
     for (std::size_t j = 0; j < attribute_count; ++j)
     {
-      if (attributes[j] == nullptr)
+      if (attributes[j] != nullptr)
       {
-        continue;
-      }
-      const double* s = row(tape.outputs[j + 1]);
-      for (int i = 0; i < n; ++i)
-      {
-        attributes[j][base + i] = err[i] != 0 ? nan : s[i];
+        copy_out(row(tape.outputs[j + 1]), attributes[j] + base);
       }
     }
     if (errors)

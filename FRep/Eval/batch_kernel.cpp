@@ -2,12 +2,16 @@
 // which is correctly rounded exactly like the scalar one; nothing else changes value.
 #include "Eval/batch_kernel.h"
 
+#include "Eval/batch_program.h"
+#include "Eval/batch_scalar_lanes.h"
+
 #include "Compiler/op_semantics.h"
 #include "Eval/scalar_ops.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace frep::eval
 {
@@ -32,10 +36,9 @@ FREP_ALWAYS_INLINE void pow_int_lanes(double* o, const double* x, int n)
   {
     const double b = x[i];
     double v = 1.0;
-    for (int k = 0; k < N; ++k)
-    {
-      v *= b;
-    }
+    // Straight-line (a loop here, even of constant count, keeps GCC from vectorising the lanes).
+    [&]<std::size_t... K>(std::index_sequence<K...>)
+    { ((v *= b, static_cast<void>(K)), ...); }(std::make_index_sequence<N>{});
     if constexpr (Negative)
     {
       v = 1 / v;
@@ -87,7 +90,7 @@ FREP_ALWAYS_INLINE void call_lanes(const Tape& tape,
     }
     for (std::size_t k = 0; k < n_in; ++k)
     {
-      calls.in[k] = blk.regs[static_cast<std::size_t>(site.inputs[k]) * blk.stride + i];
+      calls.in[k] = blk.rows[site.inputs[k]][i];
     }
     const int status = site.function->evaluate(scratch,
       std::span<const double>(calls.in.data(), n_in),
@@ -102,19 +105,59 @@ FREP_ALWAYS_INLINE void call_lanes(const Tape& tape,
       blk.regs[static_cast<std::size_t>(site.outputs[k]) * blk.stride + i] = calls.out[k];
     }
   }
+  for (std::uint32_t slot : site.outputs)
+  {
+    blk.rows[slot] = blk.regs + static_cast<std::size_t>(slot) * blk.stride;
+  }
 }
 
-FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallState& calls)
+// A binary lane loop over two rows, or a row and the instruction's immediate (BatchProgram):
+// `expr` is written in terms of the lane values `l` and `r`.
+#define FREP_BINARY(expr)                                                                      \
+  if (side == Immediate::None)                                                                 \
+  {                                                                                            \
+    FREP_LANES                                                                                 \
+    {                                                                                          \
+      const double l = x[i];                                                                   \
+      const double r = y[i];                                                                   \
+      o[i] = (expr);                                                                           \
+    }                                                                                          \
+  }                                                                                            \
+  else if (side == Immediate::B)                                                               \
+  {                                                                                            \
+    const double r = ins.imm;                                                                  \
+    FREP_LANES                                                                                 \
+    {                                                                                          \
+      const double l = x[i];                                                                   \
+      o[i] = (expr);                                                                           \
+    }                                                                                          \
+  }                                                                                            \
+  else                                                                                         \
+  {                                                                                            \
+    const double l = ins.imm;                                                                  \
+    FREP_LANES                                                                                 \
+    {                                                                                          \
+      const double r = y[i];                                                                   \
+      o[i] = (expr);                                                                           \
+    }                                                                                          \
+  }
+
+FREP_ALWAYS_INLINE void run_block_body(
+  const Tape& tape, const BatchProgram& program, const Block& blk, CallState& calls)
 {
   const int n = blk.n;
   const std::size_t stride = static_cast<std::size_t>(blk.stride);
   const std::uint32_t last = tape.slot_count == 0 ? 0 : tape.slot_count - 1;
   // Operand fields an opcode does not use may hold anything: clamp so the pointer stays valid.
-  const auto row = [&](std::uint32_t slot) { return blk.regs + std::min(slot, last) * stride; };
+  const auto own_row = [&](std::uint32_t slot) { return blk.regs + std::min(slot, last) * stride; };
+  const auto row = [&](std::uint32_t slot) { return blk.rows[std::min(slot, last)]; };
   std::uint32_t* err = blk.errors;
-  for (const Instruction& ins : tape.code)
+  const std::size_t count = program.code.size();
+  for (std::size_t k = 0; k < count; ++k)
   {
-    double* o = row(ins.out);
+    const Instruction& ins = program.code[k];
+    const Immediate side = program.immediate[k];
+    double* o = own_row(ins.out);
     const double* x = row(ins.a);
     const double* y = row(ins.b);
     const double* z = row(ins.c);
@@ -127,20 +170,20 @@ FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallS
         break;
       }
       case Opcode::Input:
-        std::memcpy(
-          o, blk.inputs[ins.index] + blk.base, static_cast<std::size_t>(n) * sizeof(double));
-        break;
+        // No copy: the slot reads the caller's array directly until it is written again.
+        blk.rows[std::min(ins.out, last)] = blk.inputs[ins.index] + blk.base;
+        continue;
       case Opcode::Add:
-        FREP_LANES o[i] = x[i] + y[i];
+        FREP_BINARY(l + r)
         break;
       case Opcode::Sub:
-        FREP_LANES o[i] = x[i] - y[i];
+        FREP_BINARY(l - r)
         break;
       case Opcode::Mul:
-        FREP_LANES o[i] = x[i] * y[i];
+        FREP_BINARY(l * r)
         break;
       case Opcode::Div:
-        FREP_LANES o[i] = x[i] / y[i];
+        FREP_BINARY(l / r)
         break;
       case Opcode::Neg:
         FREP_LANES o[i] = -x[i];
@@ -229,37 +272,31 @@ FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallS
           o[i] = std::fmod(x[i], y[i]);
         break;
       case Opcode::HfPow:
-        for (int i = 0; i < n; ++i)
-          o[i] = hf::hf_pow(x[i], y[i]);
+        hf_pow_lanes(o, x, y, n);
         break;
       case Opcode::HfPowInt:
         if (!pow_int_unrolled(ins.index, o, x, n))
         {
-          for (int i = 0; i < n; ++i)
-          {
-            o[i] = hf::hf_pow_int(x[i], ins.index);
-          }
+          hf_pow_int_lanes(o, x, ins.index, n);
         }
         break;
       case Opcode::HfMod:
-        for (int i = 0; i < n; ++i)
-          o[i] = hf::hf_mod(x[i], y[i]);
+        hf_mod_lanes(o, x, y, n);
         break;
       case Opcode::HfRound:
-        for (int i = 0; i < n; ++i)
-          o[i] = static_cast<double>(hf::hf_round(x[i]));
+        hf_round_lanes(o, x, n);
         break;
       case Opcode::Max:
-        FREP_LANES o[i] = hf::hf_max(x[i], y[i]);
+        FREP_BINARY(hf::hf_max(l, r))
         break;
       case Opcode::Min:
-        FREP_LANES o[i] = hf::hf_min(x[i], y[i]);
+        FREP_BINARY(hf::hf_min(l, r))
         break;
       case Opcode::Union:
-        FREP_LANES o[i] = hf::unite(x[i], y[i]);
+        FREP_BINARY(hf::unite(l, r))
         break;
       case Opcode::Intersect:
-        FREP_LANES o[i] = hf::intersect(x[i], y[i]);
+        FREP_BINARY(hf::intersect(l, r))
         break;
       case Opcode::Eq:
         FREP_LANES o[i] = std::fabs(x[i] - y[i]) < hf::kEps ? 1.0 : 0.0;
@@ -268,16 +305,16 @@ FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallS
         FREP_LANES o[i] = std::fabs(x[i] - y[i]) >= hf::kEps ? 1.0 : 0.0;
         break;
       case Opcode::Lt:
-        FREP_LANES o[i] = x[i] < y[i] ? 1.0 : 0.0;
+        FREP_BINARY(l < r ? 1.0 : 0.0)
         break;
       case Opcode::Le:
-        FREP_LANES o[i] = x[i] <= y[i] ? 1.0 : 0.0;
+        FREP_BINARY(l <= r ? 1.0 : 0.0)
         break;
       case Opcode::Gt:
-        FREP_LANES o[i] = x[i] > y[i] ? 1.0 : 0.0;
+        FREP_BINARY(l > r ? 1.0 : 0.0)
         break;
       case Opcode::Ge:
-        FREP_LANES o[i] = x[i] >= y[i] ? 1.0 : 0.0;
+        FREP_BINARY(l >= r ? 1.0 : 0.0)
         break;
       case Opcode::Truthy:
         FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 1.0 : 0.0;
@@ -292,33 +329,48 @@ FREP_ALWAYS_INLINE void run_block_body(const Tape& tape, const Block& blk, CallS
         FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 0.0 : 1.0;
         break;
       case Opcode::Select:
-        FREP_LANES o[i] = x[i] != 0.0 ? y[i] : z[i];
+        FREP_LANES
+        {
+          // both loads unconditional, so the choice is a blend
+          const double t = y[i];
+          const double f = z[i];
+          o[i] = x[i] != 0.0 ? t : f;
+        }
         break;
       case Opcode::ErrorIf:
       {
         const std::uint32_t id = static_cast<std::uint32_t>(ins.index);
-        FREP_LANES err[i] = (err[i] == 0 && x[i] != 0.0) ? id : err[i];
-        break;
+        FREP_LANES
+        {
+          const std::uint32_t e = err[i];
+          const bool fires = (e == 0) & (x[i] != 0.0);
+          err[i] = fires ? id : e;
+        }
+        continue; // writes no slot
       }
       case Opcode::Call:
-        call_lanes(tape, ins, blk, calls);
-        break;
+        call_lanes(tape, ins, blk, calls); // points its output slots at their rows
+        continue;
     }
+    blk.rows[std::min(ins.out, last)] = o;
   }
 }
 
+#undef FREP_BINARY
 #undef FREP_LANES
 
-void run_block_baseline(const Tape& tape, const Block& blk, CallState& calls)
+void run_block_baseline(
+  const Tape& tape, const BatchProgram& program, const Block& blk, CallState& calls)
 {
-  run_block_body(tape, blk, calls);
+  run_block_body(tape, program, blk, calls);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 // AVX2 without FMA: wider lanes, the same operations.
-[[gnu::target("avx2")]] void run_block_avx2(const Tape& tape, const Block& blk, CallState& calls)
+[[gnu::target("avx2")]] void run_block_avx2(
+  const Tape& tape, const BatchProgram& program, const Block& blk, CallState& calls)
 {
-  run_block_body(tape, blk, calls);
+  run_block_body(tape, program, blk, calls);
 }
 #endif
 
@@ -338,18 +390,19 @@ bool cpu_has_avx2()
 #endif
 }
 
-void run_block(const Tape& tape, const Block& block, CallState& calls, bool wide)
+void run_block(
+  const Tape& tape, const BatchProgram& program, const Block& block, CallState& calls, bool wide)
 {
 #if defined(__x86_64__) && defined(__GNUC__)
   if (wide && cpu_has_avx2())
   {
-    run_block_avx2(tape, block, calls);
+    run_block_avx2(tape, program, block, calls);
     return;
   }
 #else
   (void)wide;
 #endif
-  run_block_baseline(tape, block, calls);
+  run_block_baseline(tape, program, block, calls);
 }
 
 } // namespace frep::eval

@@ -26,6 +26,9 @@ struct CallState
 struct Block
 {
   double* regs = nullptr;          ///< row s = slot s, `stride` doubles, 64-byte aligned
+  /// Where slot s's lanes currently are: its own row, or for an Input the caller's array (no
+  /// copy). slot_count entries, owned by the caller; valid after run_block for the outputs.
+  const double** rows = nullptr;
   std::uint32_t* errors = nullptr; ///< per lane, 0 = none (must be zeroed by the caller)
   int n = 0;                       ///< active lanes (<= stride)
   int stride = 0;
@@ -36,7 +39,11 @@ struct Block
 /// Whether the AVX2 kernel may run on this CPU.
 bool cpu_has_avx2();
 
-/// Runs the tape over one block. `wide` selects the AVX2 build (only if cpu_has_avx2()).
-void run_block(const Tape& tape, const Block& block, CallState& calls, bool wide);
+struct BatchProgram;
+
+/// Runs `program` (the batch form of `tape`, see batch_program.h) over one block. `wide`
+/// selects the AVX2 build (only if cpu_has_avx2()).
+void run_block(
+  const Tape& tape, const BatchProgram& program, const Block& block, CallState& calls, bool wide);
 
 } // namespace frep::eval

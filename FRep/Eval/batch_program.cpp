@@ -1,0 +1,153 @@
+#include "Eval/batch_program.h"
+
+#include <limits>
+
+namespace frep::eval
+{
+
+bool takes_immediate(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Add:
+    case Opcode::Sub:
+    case Opcode::Mul:
+    case Opcode::Div:
+    case Opcode::Max:
+    case Opcode::Min:
+    case Opcode::Union:
+    case Opcode::Intersect:
+    case Opcode::Lt:
+    case Opcode::Le:
+    case Opcode::Gt:
+    case Opcode::Ge:
+      return true;
+    default:
+      return false;
+  }
+}
+
+namespace
+{
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+/// Which operand fields an opcode reads (Const/Input read none).
+int operands_read(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Const:
+    case Opcode::Input:
+    case Opcode::Call:
+      return 0;
+    case Opcode::Select:
+      return 3;
+    case Opcode::Add: case Opcode::Sub: case Opcode::Mul: case Opcode::Div:
+    case Opcode::Atan2: case Opcode::Pow: case Opcode::Fmod: case Opcode::HfPow:
+    case Opcode::HfMod: case Opcode::Max: case Opcode::Min: case Opcode::Union:
+    case Opcode::Intersect: case Opcode::Eq: case Opcode::Ne: case Opcode::Lt:
+    case Opcode::Le: case Opcode::Gt: case Opcode::Ge: case Opcode::And: case Opcode::Or:
+      return 2;
+    default:
+      return 1;
+  }
+}
+
+} // namespace
+
+BatchProgram make_batch_program(const Tape& tape)
+{
+  const std::size_t count = tape.code.size();
+  // Forward scan: which Const instruction currently defines each slot; a read either becomes an
+  // immediate (one per instruction, operand a or b) or keeps the Const.
+  std::vector<std::uint32_t> defined_by(tape.slot_count, kNone);
+  std::vector<bool> needed(count, false);
+  std::vector<Immediate> immediate(count, Immediate::None);
+  const auto keep = [&](std::uint32_t slot)
+  {
+    if (slot < defined_by.size() && defined_by[slot] != kNone)
+    {
+      needed[defined_by[slot]] = true;
+    }
+  };
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Instruction& ins = tape.code[i];
+    if (ins.op == Opcode::Call)
+    {
+      for (std::uint32_t slot : tape.calls[static_cast<std::size_t>(ins.index)].inputs)
+      {
+        keep(slot);
+      }
+    }
+    const int reads = operands_read(ins.op);
+    const std::uint32_t operand[3] = { ins.a, ins.b, ins.c };
+    for (int k = 0; k < reads; ++k)
+    {
+      const std::uint32_t slot = operand[k];
+      const bool is_const = slot < defined_by.size() && defined_by[slot] != kNone;
+      if (is_const && k < 2 && takes_immediate(ins.op) && immediate[i] == Immediate::None)
+      {
+        immediate[i] = k == 0 ? Immediate::A : Immediate::B;
+        continue;
+      }
+      keep(slot);
+    }
+    if (ins.op == Opcode::Call)
+    {
+      for (std::uint32_t slot : tape.calls[static_cast<std::size_t>(ins.index)].outputs)
+      {
+        if (slot < defined_by.size())
+        {
+          defined_by[slot] = kNone;
+        }
+      }
+    }
+    else if (ins.op != Opcode::ErrorIf && ins.out < defined_by.size())
+    {
+      defined_by[ins.out] = ins.op == Opcode::Const ? static_cast<std::uint32_t>(i) : kNone;
+    }
+  }
+  for (std::uint32_t slot : tape.outputs)
+  {
+    keep(slot);
+  }
+
+  // Second pass: write the program, taking each immediate's value from its Const.
+  BatchProgram program;
+  std::fill(defined_by.begin(), defined_by.end(), kNone);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    Instruction ins = tape.code[i];
+    const Immediate side = immediate[i];
+    if (side != Immediate::None)
+    {
+      const std::uint32_t slot = side == Immediate::A ? ins.a : ins.b;
+      ins.imm = tape.code[defined_by[slot]].imm;
+    }
+    if (ins.op == Opcode::Call)
+    {
+      for (std::uint32_t slot : tape.calls[static_cast<std::size_t>(ins.index)].outputs)
+      {
+        if (slot < defined_by.size())
+        {
+          defined_by[slot] = kNone;
+        }
+      }
+    }
+    else if (ins.op != Opcode::ErrorIf && ins.out < defined_by.size())
+    {
+      defined_by[ins.out] = ins.op == Opcode::Const ? static_cast<std::uint32_t>(i) : kNone;
+    }
+    if (ins.op == Opcode::Const && !needed[i])
+    {
+      continue;
+    }
+    program.code.push_back(ins);
+    program.immediate.push_back(side);
+  }
+  return program;
+}
+
+} // namespace frep::eval

@@ -18,8 +18,10 @@ struct ParseOptions
   /// default (a documented deviation). false reproduces the original.
   bool accept_carriage_return = true;
   /// Deepest nesting of expressions/conditions/statements before the parser refuses the file
-  /// with a clear error (protects every recursive pass from stack overflow).
-  int max_nesting_depth = 200;
+  /// with a clear error (protects every recursive pass from stack overflow). It is the depth
+  /// of the tree, so a flat chain `a | b | c ...` counts one level per operator: 2000 allows
+  /// chains of about a thousand terms and needs well under 1 MB of stack in every pass.
+  int max_nesting_depth = 2000;
 };
 
 struct ParseResult

@@ -496,3 +496,32 @@ TEST(CompilerDag, KeepsAnRFunctionWrittenWithoutTheAlphaTerm)
 
 } // namespace
 } // namespace frep
+
+namespace frep
+{
+namespace
+{
+
+TEST(CompilerModel, LongFlatChainsParseCompileAndEvaluate)
+{
+  // A union of 900 terms in one expression is a left-deep tree of depth ~1800: within the
+  // default nesting limit, and every recursive pass (parser, interpreter, lowering, AST
+  // destruction) must handle it.
+  std::string text = "my_model(x[3], a[1]) { my_model = 0 - x[1]*x[1]";
+  for (int i = 0; i < 900; ++i)
+  {
+    text += " | (" + std::to_string(i % 7) + " - x[2]*x[2] - x[3]*x[3])";
+  }
+  text += "; }";
+  auto model = compile_text(text);
+  ASSERT_TRUE(model);
+  auto tape = model->tape();
+  PointEvaluator pe(tape);
+  Interpreter in(model->program(), model->object_index());
+  const std::vector<double> p{ 0.25, 0.5, 0.75 };
+  const double expected = in.evaluate(p).value;
+  EXPECT_TRUE(same_bits(pe.value(p), expected) || (std::isnan(expected) && std::isnan(pe.value(p))));
+}
+
+} // namespace
+} // namespace frep

@@ -73,7 +73,7 @@ struct BatchEvaluator::Impl
   eval::BatchProgram program;
   std::shared_ptr<ThreadPool> pool;
   int block = 256;
-  bool wide = true;
+  SimdLevel simd = SimdLevel::Best;
   std::vector<std::unique_ptr<Participant>> participants; // made on first use, per pool slot
 };
 
@@ -93,7 +93,7 @@ BatchEvaluator::BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOpti
   impl_->tape = std::move(tape);
   impl_->pool = options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
   impl_->block = options.block_size;
-  impl_->wide = options.wide_simd;
+  impl_->simd = options.simd;
   impl_->participants.resize(static_cast<std::size_t>(impl_->pool->size()));
 }
 
@@ -155,7 +155,7 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
     blk.stride = im.block;
     blk.inputs = inputs.data();
     blk.base = base;
-    eval::run_block(tape, im.program, blk, p.calls, im.wide);
+    eval::run_block(tape, im.program, blk, p.calls, im.simd);
 
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     const std::uint32_t* err = p.errors.data();

@@ -15,6 +15,15 @@ namespace frep
 
 class ThreadPool;
 
+/// Kernel builds of the batch evaluator (x86-64; elsewhere only Baseline exists).
+enum class SimdLevel
+{
+  Baseline, ///< SSE2 (the x86-64 baseline): 2 lanes per instruction
+  AVX2,     ///< 4 lanes, if the CPU has AVX2 (else Baseline)
+  AVX512,   ///< 8 lanes, if the CPU has AVX-512 F/DQ/VL (else the best lower level)
+  Best = AVX512
+};
+
 struct BatchOptions
 {
   /// Worker threads; 0 = std::thread::hardware_concurrency(). 1 = evaluate on the caller.
@@ -24,9 +33,9 @@ struct BatchOptions
   /// A pool to run on instead of one of the evaluator's own (then `threads` is ignored). Several
   /// evaluators may share a pool; their evaluate() calls are then serialised by it.
   std::shared_ptr<ThreadPool> pool;
-  /// Use the AVX2 lane loops when the CPU has AVX2 (results are identical either way; false
-  /// forces the SSE2 baseline, for tests and measurements).
-  bool wide_simd = true;
+  /// The widest kernel build to use: the best the CPU has by default. Every level gives
+  /// identical results (no FMA anywhere); lower levels exist for tests and measurements.
+  SimdLevel simd = SimdLevel::Best;
 };
 
 class BatchEvaluator

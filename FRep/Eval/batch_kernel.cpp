@@ -372,9 +372,31 @@ void run_block_baseline(
 {
   run_block_body(tape, program, blk, calls);
 }
+
+// AVX-512 (8 lanes), again without FMA.
+[[gnu::target("avx512f,avx512dq,avx512vl,avx2")]] void run_block_avx512(
+  const Tape& tape, const BatchProgram& program, const Block& blk, CallState& calls)
+{
+  run_block_body(tape, program, blk, calls);
+}
 #endif
 
 } // namespace
+
+bool cpu_has_avx512()
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool has = []
+  {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512dq") != 0 &&
+      __builtin_cpu_supports("avx512vl") != 0;
+  }();
+  return has;
+#else
+  return false;
+#endif
+}
 
 bool cpu_has_avx2()
 {
@@ -390,17 +412,22 @@ bool cpu_has_avx2()
 #endif
 }
 
-void run_block(
-  const Tape& tape, const BatchProgram& program, const Block& block, CallState& calls, bool wide)
+void run_block(const Tape& tape, const BatchProgram& program, const Block& block,
+  CallState& calls, SimdLevel simd)
 {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (wide && cpu_has_avx2())
+  if (simd >= SimdLevel::AVX512 && cpu_has_avx512())
+  {
+    run_block_avx512(tape, program, block, calls);
+    return;
+  }
+  if (simd >= SimdLevel::AVX2 && cpu_has_avx2())
   {
     run_block_avx2(tape, program, block, calls);
     return;
   }
 #else
-  (void)wide;
+  (void)simd;
 #endif
   run_block_baseline(tape, program, block, calls);
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "Compiler/tape.h"
+#include "Eval/batch_evaluator.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -38,12 +39,14 @@ struct Block
 
 /// Whether the AVX2 kernel may run on this CPU.
 bool cpu_has_avx2();
+/// Whether the AVX-512 (F, DQ, VL) kernel may run on this CPU.
+bool cpu_has_avx512();
 
 struct BatchProgram;
 
-/// Runs `program` (the batch form of `tape`, see batch_program.h) over one block. `wide`
-/// selects the AVX2 build (only if cpu_has_avx2()).
-void run_block(
-  const Tape& tape, const BatchProgram& program, const Block& block, CallState& calls, bool wide);
+/// Runs `program` (the batch form of `tape`, see batch_program.h) over one block.
+/// `simd` is the widest build to use (lowered to what the CPU has).
+void run_block(const Tape& tape, const BatchProgram& program, const Block& block,
+  CallState& calls, SimdLevel simd);
 
 } // namespace frep::eval

@@ -177,11 +177,12 @@ TEST(Consistency, BatchEqualsPointBitForBit)
     }
     for (const int threads : { 1, 2 })
     {
-      for (const bool wide : { false, true })
+      for (const frep::SimdLevel simd :
+        { frep::SimdLevel::Baseline, frep::SimdLevel::AVX2, frep::SimdLevel::AVX512 })
       {
         frep::BatchOptions options;
         options.threads = threads;
-        options.wide_simd = wide;
+        options.simd = simd;
         options.block_size = 64;
         frep::BatchEvaluator batch(s.tape, options);
         std::vector<double> values(points.size());
@@ -190,7 +191,7 @@ TEST(Consistency, BatchEqualsPointBitForBit)
         for (std::size_t i = 0; i < points.size(); ++i)
         {
           ASSERT_TRUE(same_bits(values[i], expected_value[i]))
-            << s.id << " point " << i << " threads " << threads << " wide " << wide << ": batch "
+            << s.id << " point " << i << " threads " << threads << " simd " << static_cast<int>(simd) << ": batch "
             << values[i] << " point " << expected_value[i];
           ASSERT_EQ(errors[i], expected_error[i]) << s.id << " point " << i;
         }

@@ -95,11 +95,11 @@ std::vector<BatchOptions> option_sets()
   std::vector<BatchOptions> sets;
   for (int threads : { 1, 2 })
   {
-    for (bool wide : { true, false })
+    for (SimdLevel simd : { SimdLevel::Baseline, SimdLevel::AVX2, SimdLevel::AVX512 })
     {
       BatchOptions o;
       o.threads = threads;
-      o.wide_simd = wide;
+      o.simd = simd;
       sets.push_back(o);
     }
   }
@@ -113,7 +113,7 @@ std::vector<BatchOptions> option_sets()
 std::string describe(const BatchOptions& o)
 {
   return "threads=" + std::to_string(o.threads) + " block=" + std::to_string(o.block_size) +
-         (o.wide_simd ? " avx2-if-present" : " sse2");
+         " simd=" + std::to_string(static_cast<int>(o.simd));
 }
 
 TEST(BatchEvaluator, EveryOpcodeEqualsPointBitForBit)

@@ -169,8 +169,9 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
     // Copy an output row out; lanes that failed read NaN (the common case: none failed).
     const auto copy_out = [&](const double* source, double* target)
     {
-      if (source == nullptr)
+      if (source == nullptr || failed == static_cast<std::size_t>(n))
       {
+        // (a block whose lanes all failed may have stopped early: its rows are not written)
         std::fill(target, target + n, nan);
       }
       else if (failed == 0)

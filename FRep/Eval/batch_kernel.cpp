@@ -346,6 +346,17 @@ FREP_ALWAYS_INLINE void run_block_body(
           const bool fires = (e == 0) & (x[i] != 0.0);
           err[i] = fires ? id : e;
         }
+        // A block whose every lane has failed has nothing left to compute (its outputs are NaN):
+        // the point evaluator stops at the first error too.
+        bool all_failed = true;
+        for (int i = 0; i < n; ++i)
+        {
+          all_failed &= err[i] != 0;
+        }
+        if (all_failed)
+        {
+          return;
+        }
         continue; // writes no slot
       }
       case Opcode::Call:

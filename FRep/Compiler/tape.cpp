@@ -117,6 +117,15 @@ const char* opcode_name(Opcode op)
 namespace
 {
 
+std::string number(double v)
+{
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+} // namespace
+
 int operand_count(Opcode op)
 {
   switch (op)
@@ -153,15 +162,6 @@ int operand_count(Opcode op)
       return 1;
   }
 }
-
-std::string number(double v)
-{
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
-
-} // namespace
 
 std::string Tape::dump() const
 {

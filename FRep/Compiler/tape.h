@@ -66,6 +66,10 @@ enum class Opcode : std::uint8_t
 /// Returns the mnemonic, for dumps and tests.
 const char* opcode_name(Opcode op);
 
+/// How many of the operand slots a, b, c an opcode reads (0 for Const, Input and Call, whose
+/// operands are an immediate, an input index or a call site; 3 only for Select).
+int operand_count(Opcode op);
+
 /// One instruction. Slots are indices into the evaluator's register file.
 struct Instruction
 {

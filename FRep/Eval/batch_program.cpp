@@ -32,28 +32,6 @@ namespace
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-/// Which operand fields an opcode reads (Const/Input read none).
-int operands_read(Opcode op)
-{
-  switch (op)
-  {
-    case Opcode::Const:
-    case Opcode::Input:
-    case Opcode::Call:
-      return 0;
-    case Opcode::Select:
-      return 3;
-    case Opcode::Add: case Opcode::Sub: case Opcode::Mul: case Opcode::Div:
-    case Opcode::Atan2: case Opcode::Pow: case Opcode::Fmod: case Opcode::HfPow:
-    case Opcode::HfMod: case Opcode::Max: case Opcode::Min: case Opcode::Union:
-    case Opcode::Intersect: case Opcode::Eq: case Opcode::Ne: case Opcode::Lt:
-    case Opcode::Le: case Opcode::Gt: case Opcode::Ge: case Opcode::And: case Opcode::Or:
-      return 2;
-    default:
-      return 1;
-  }
-}
-
 } // namespace
 
 BatchProgram make_batch_program(const Tape& tape)
@@ -81,7 +59,7 @@ BatchProgram make_batch_program(const Tape& tape)
         keep(slot);
       }
     }
-    const int reads = operands_read(ins.op);
+    const int reads = operand_count(ins.op);
     const std::uint32_t operand[3] = { ins.a, ins.b, ins.c };
     for (int k = 0; k < reads; ++k)
     {

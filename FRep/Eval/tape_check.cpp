@@ -8,44 +8,17 @@ namespace frep::eval
 
 bool reads_a(Opcode op)
 {
-  return op != Opcode::Const && op != Opcode::Input && op != Opcode::Call;
+  return operand_count(op) >= 1;
 }
 
 bool reads_b(Opcode op)
 {
-  switch (op)
-  {
-    case Opcode::Add:
-    case Opcode::Sub:
-    case Opcode::Mul:
-    case Opcode::Div:
-    case Opcode::Atan2:
-    case Opcode::Pow:
-    case Opcode::Fmod:
-    case Opcode::HfPow:
-    case Opcode::HfMod:
-    case Opcode::Max:
-    case Opcode::Min:
-    case Opcode::Union:
-    case Opcode::Intersect:
-    case Opcode::Eq:
-    case Opcode::Ne:
-    case Opcode::Lt:
-    case Opcode::Le:
-    case Opcode::Gt:
-    case Opcode::Ge:
-    case Opcode::And:
-    case Opcode::Or:
-    case Opcode::Select:
-      return true;
-    default:
-      return false;
-  }
+  return operand_count(op) >= 2;
 }
 
 bool reads_c(Opcode op)
 {
-  return op == Opcode::Select;
+  return operand_count(op) >= 3;
 }
 
 namespace

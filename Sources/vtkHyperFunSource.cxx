@@ -1,0 +1,356 @@
+#include "vtkHyperFunSource.h"
+
+#include "vtkFRepObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include "Compiler/model.h"
+#include "Language/parser.h"
+
+#include <fstream>
+#include <sstream>
+
+vtkStandardNewMacro(vtkHyperFunSource);
+
+//------------------------------------------------------------------------------
+vtkHyperFunSource::vtkHyperFunSource()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkHyperFunSource::~vtkHyperFunSource()
+{
+  this->SetModelText(nullptr);
+  this->SetFileName(nullptr);
+  this->SetObjectName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::SetParameter(int i, double value)
+{
+  if (i < 0)
+  {
+    vtkErrorMacro(<< "SetParameter: negative index " << i);
+    return;
+  }
+  if (i < this->GetNumberOfParameters() && this->Parameters[i] == value)
+  {
+    return;
+  }
+  if (i >= this->GetNumberOfParameters())
+  {
+    this->Parameters.resize(i + 1, 0.0);
+  }
+  this->Parameters[i] = value;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+double vtkHyperFunSource::GetParameter(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfParameters() ? this->Parameters[i] : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::SetNumberOfParameters(int n)
+{
+  if (n < 0)
+  {
+    vtkErrorMacro(<< "SetNumberOfParameters: negative count " << n);
+    return;
+  }
+  if (n == this->GetNumberOfParameters())
+  {
+    return;
+  }
+  this->Parameters.resize(n, 0.0);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::SetCoordinateRange(int i, double lo, double hi)
+{
+  if (i < 0)
+  {
+    vtkErrorMacro(<< "SetCoordinateRange: negative coordinate " << i);
+    return;
+  }
+  if (!(lo <= hi))
+  {
+    vtkErrorMacro(<< "SetCoordinateRange: empty interval [" << lo << ", " << hi
+                  << "] for coordinate " << i);
+    return;
+  }
+  const std::size_t index = static_cast<std::size_t>(i);
+  if (index < this->HasCoordinateRange.size() && this->HasCoordinateRange[index] &&
+      this->CoordinateRanges[index][0] == lo && this->CoordinateRanges[index][1] == hi)
+  {
+    return;
+  }
+  if (index >= this->HasCoordinateRange.size())
+  {
+    this->HasCoordinateRange.resize(index + 1, false);
+    this->CoordinateRanges.resize(index + 1, { 0.0, 0.0 });
+  }
+  this->HasCoordinateRange[index] = true;
+  this->CoordinateRanges[index] = { lo, hi };
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::GetCoordinateRange(int i, double range[2]) const
+{
+  const std::size_t index = static_cast<std::size_t>(i);
+  if (i >= 0 && index < this->HasCoordinateRange.size() && this->HasCoordinateRange[index])
+  {
+    range[0] = this->CoordinateRanges[index][0];
+    range[1] = this->CoordinateRanges[index][1];
+    return;
+  }
+  range[0] = this->DefaultCoordinateRange[0];
+  range[1] = this->DefaultCoordinateRange[1];
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::RemoveAllCoordinateRanges()
+{
+  if (this->HasCoordinateRange.empty())
+  {
+    return;
+  }
+  this->HasCoordinateRange.clear();
+  this->CoordinateRanges.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkFRepObject* vtkHyperFunSource::GetOutput()
+{
+  return this->GetOutput(0);
+}
+
+//------------------------------------------------------------------------------
+vtkFRepObject* vtkHyperFunSource::GetOutput(int port)
+{
+  return vtkFRepObject::SafeDownCast(this->GetOutputDataObject(port));
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunSource::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkFRepObject");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkHyperFunSource::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inInfo, outInfo);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inInfo, outInfo);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inInfo, outInfo);
+  }
+  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunSource::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
+{
+  vtkInformation* info = outInfo->GetInformationObject(0);
+  if (!vtkFRepObject::GetData(info))
+  {
+    vtkNew<vtkFRepObject> output;
+    info->Set(vtkDataObject::DATA_OBJECT(), output);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunSource::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
+{
+  // Every rank builds the full object: it cannot be split into pieces or sent between ranks.
+  outInfo->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
+{
+  std::string text;
+  std::string sourceName;
+  if (this->FileName && *this->FileName)
+  {
+    std::ifstream in(this->FileName, std::ios::binary);
+    if (!in)
+    {
+      vtkErrorMacro(<< this->FileName << ": cannot open the file");
+      return nullptr;
+    }
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad())
+    {
+      vtkErrorMacro(<< this->FileName << ": cannot read the file");
+      return nullptr;
+    }
+    text = buffer.str();
+    sourceName = this->FileName;
+  }
+  else if (this->ModelText)
+  {
+    text = this->ModelText;
+    sourceName = "<string>";
+  }
+  else
+  {
+    vtkErrorMacro(<< "neither FileName nor ModelText is set");
+    return nullptr;
+  }
+  const std::string objectName = this->ObjectName ? this->ObjectName : "";
+
+  if (this->CachedModel && text == this->CachedText && sourceName == this->CachedSourceName &&
+      objectName == this->CachedObjectName)
+  {
+    return this->CachedModel;
+  }
+  this->CachedModel.reset();
+
+  const frep::ParseResult parsed = frep::parse_program(text, sourceName);
+  if (!parsed.ok())
+  {
+    for (const frep::Diagnostic& d : parsed.diagnostics)
+    {
+      vtkErrorMacro(<< d.format());
+    }
+    return nullptr;
+  }
+  const frep::ast::Program& program = *parsed.program;
+  if (program.objects.empty())
+  {
+    vtkErrorMacro(<< sourceName << ": the file defines no object");
+    return nullptr;
+  }
+  int object = -1;
+  if (objectName.empty())
+  {
+    object = frep::ast::select_object(program, "my_model");
+  }
+  else
+  {
+    object = frep::ast::find_object(program, objectName);
+    if (object < 0)
+    {
+      std::string names;
+      for (const frep::ast::Object& o : program.objects)
+      {
+        names += (names.empty() ? "" : ", ") + o.name;
+      }
+      vtkErrorMacro(<< sourceName << ": no object called '" << objectName
+                    << "'; the objects are: " << names);
+      return nullptr;
+    }
+  }
+
+  frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, object);
+  if (!compiled.model)
+  {
+    for (const frep::Diagnostic& d : compiled.diagnostics)
+    {
+      vtkErrorMacro(<< d.format());
+    }
+    if (compiled.diagnostics.empty())
+    {
+      vtkErrorMacro(<< sourceName << ": object '" << program.objects[object].name
+                    << "' could not be compiled");
+    }
+    return nullptr;
+  }
+  this->CachedModel = std::move(compiled.model);
+  this->CachedText = std::move(text);
+  this->CachedSourceName = std::move(sourceName);
+  this->CachedObjectName = objectName;
+  return this->CachedModel;
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunSource::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
+{
+  vtkFRepObject* output = vtkFRepObject::GetData(outInfo);
+  if (!output)
+  {
+    vtkErrorMacro(<< "the output is not a vtkFRepObject");
+    return 0;
+  }
+  output->Initialize();
+
+  std::shared_ptr<const frep::Model> model = this->BuildModel();
+  if (!model)
+  {
+    return 1; // the errors are reported; the output stays empty
+  }
+  output->SetModel(model);
+  for (int i = 0; i < model->x_dim(); ++i)
+  {
+    double range[2];
+    this->GetCoordinateRange(i, range);
+    output->SetCoordinateRange(i, range[0], range[1]);
+  }
+  output->SetParameters(this->Parameters);
+  if (model->a_dim() < this->GetNumberOfParameters())
+  {
+    vtkWarningMacro(<< model->name() << " has a[" << model->a_dim() << "] but "
+                    << this->GetNumberOfParameters()
+                    << " parameters are set; the extra ones are ignored");
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ModelText: " << (this->ModelText ? this->ModelText : "(none)") << "\n";
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ObjectName: " << (this->ObjectName ? this->ObjectName : "(none)") << "\n";
+  os << indent << "Parameters (" << this->Parameters.size() << "):";
+  for (double a : this->Parameters)
+  {
+    os << " " << a;
+  }
+  os << "\n";
+  os << indent << "DefaultCoordinateRange: [" << this->DefaultCoordinateRange[0] << ", "
+     << this->DefaultCoordinateRange[1] << "]\n";
+  os << indent << "CoordinateRanges:";
+  for (std::size_t i = 0; i < this->HasCoordinateRange.size(); ++i)
+  {
+    if (this->HasCoordinateRange[i])
+    {
+      os << " x" << i + 1 << "=[" << this->CoordinateRanges[i][0] << ", "
+         << this->CoordinateRanges[i][1] << "]";
+    }
+  }
+  os << "\n";
+  os << indent
+     << "CachedModel: " << (this->CachedModel ? this->CachedModel->name() : std::string("(none)"))
+     << "\n";
+}

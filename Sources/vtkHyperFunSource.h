@@ -1,0 +1,161 @@
+/**
+ * @class   vtkHyperFunSource
+ * @brief   HyperFun text or .hf file -> vtkFRepObject (source and reader)
+ *
+ * vtkHyperFunSource parses a HyperFun program, compiles one of its objects and produces a
+ * vtkFRepObject with every coordinate free. The program comes from FileName when it is set (the
+ * source then doubles as the .hf reader), else from ModelText.
+ *
+ * The object evaluated is ObjectName, compared case-insensitively; when ObjectName is empty,
+ * the object called my_model, else the first object of the program (as the original
+ * interpreter does). An ObjectName the program does not define is an error that lists the
+ * objects.
+ *
+ * Parameters are the a[] values a[1..] (missing ones are 0). Coordinate ranges set the interval
+ * of each coordinate of the output (SetCoordinateRange, 0-based); coordinates without one get
+ * DefaultCoordinateRange, [-10, 10] like hfp's default box.
+ *
+ * Errors: every diagnostic of the parser and the compiler is reported through its own
+ * vtkErrorMacro as "file:line:col: error: message" ("<string>" is the file name of ModelText),
+ * and the output is left empty (an initialised vtkFRepObject without a model). Nothing crashes.
+ *
+ * Every rank of a parallel run builds the full object (CAN_HANDLE_PIECE_REQUEST is set): the
+ * object cannot be split or sent between ranks. The parsed and compiled model is cached:
+ * changing Parameters or ranges re-specialises it without parsing again.
+ *
+ * @sa vtkFRepObject vtkFRepImplicitFunction
+ */
+#ifndef vtkHyperFunSource_h
+#define vtkHyperFunSource_h
+
+#include "FRepKitSourcesModule.h" // for export macro
+#include "vtkAlgorithm.h"
+
+#include <array>  // for std::array
+#include <memory> // for std::shared_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace frep
+{
+class Model;
+}
+
+class vtkFRepObject;
+
+class FREPKITSOURCES_EXPORT vtkHyperFunSource : public vtkAlgorithm
+{
+public:
+  static vtkHyperFunSource* New();
+  vtkTypeMacro(vtkHyperFunSource, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The HyperFun program text (default none). Used when FileName is not set.
+   */
+  vtkSetStringMacro(ModelText);
+  vtkGetStringMacro(ModelText);
+  ///@}
+
+  ///@{
+  /**
+   * A .hf file to read (default none). When set, it wins over ModelText.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The object to compile, case-insensitive (default none: my_model, else the first object).
+   */
+  vtkSetStringMacro(ObjectName);
+  vtkGetStringMacro(ObjectName);
+  ///@}
+
+  ///@{
+  /**
+   * The a[] parameters: SetParameter(i, v) sets a[i + 1] (0-based i; the list grows with zeros
+   * as needed); SetNumberOfParameters(n) truncates or pads with zeros (default 0 parameters).
+   * GetParameter(i) is 0 beyond the values given.
+   */
+  void SetParameter(int i, double value);
+  double GetParameter(int i) const;
+  void SetNumberOfParameters(int n);
+  int GetNumberOfParameters() const { return static_cast<int>(this->Parameters.size()); }
+  void RemoveAllParameters() { this->SetNumberOfParameters(0); }
+  ///@}
+
+  ///@{
+  /**
+   * Interval [lo, hi] of coordinate i (0-based: x[i + 1]) in the output. Coordinates without
+   * an interval of their own get DefaultCoordinateRange. lo > hi is an error.
+   * GetCoordinateRange gives the interval coordinate i will get.
+   */
+  void SetCoordinateRange(int i, double lo, double hi);
+  void GetCoordinateRange(int i, double range[2]) const;
+  void RemoveAllCoordinateRanges();
+  ///@}
+
+  ///@{
+  /**
+   * Interval of every coordinate without one of its own (default [-10, 10], hfp's box).
+   */
+  vtkSetVector2Macro(DefaultCoordinateRange, double);
+  vtkGetVector2Macro(DefaultCoordinateRange, double);
+  ///@}
+
+  ///@{
+  /**
+   * The output.
+   */
+  vtkFRepObject* GetOutput();
+  vtkFRepObject* GetOutput(int port);
+  ///@}
+
+  /**
+   * Dispatches REQUEST_DATA_OBJECT, REQUEST_INFORMATION and REQUEST_DATA.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
+
+protected:
+  /**
+   * Defaults: no ModelText, FileName or ObjectName, no parameters, DefaultCoordinateRange
+   * [-10, 10]; no input port, one output port (vtkFRepObject).
+   */
+  vtkHyperFunSource();
+  ~vtkHyperFunSource() override;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+
+  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  char* ModelText = nullptr;
+  char* FileName = nullptr;
+  char* ObjectName = nullptr;
+  double DefaultCoordinateRange[2] = { -10.0, 10.0 };
+  std::vector<double> Parameters;
+  // Per coordinate: has an interval of its own, and the interval.
+  std::vector<bool> HasCoordinateRange;
+  std::vector<std::array<double, 2>> CoordinateRanges;
+
+private:
+  vtkHyperFunSource(const vtkHyperFunSource&) = delete;
+  void operator=(const vtkHyperFunSource&) = delete;
+
+  // Reads, parses and compiles (or reuses the cached model); reports every diagnostic.
+  std::shared_ptr<const frep::Model> BuildModel();
+
+  // The cached model and what it was built from.
+  std::shared_ptr<const frep::Model> CachedModel;
+  std::string CachedText;
+  std::string CachedSourceName;
+  std::string CachedObjectName;
+};
+
+#endif

@@ -1,0 +1,37 @@
+# The VTK modules of FRepKit (see DESIGN.md): each folder with a vtk.module file is scanned and
+# built against ParaView's VTK. Included after enable_testing() so that module tests register
+# with ctest (test names: <module>Cxx-<Test>, e.g. FRepKit::SourcesCxx-TestFRepObject).
+set(_frepkit_module_files)
+foreach(_frepkit_module_dir IN ITEMS Sources Filters Mapping)
+  if(EXISTS "${PROJECT_SOURCE_DIR}/${_frepkit_module_dir}/vtk.module")
+    list(APPEND _frepkit_module_files "${PROJECT_SOURCE_DIR}/${_frepkit_module_dir}/vtk.module")
+  endif()
+endforeach()
+
+vtk_module_scan(
+  MODULE_FILES        ${_frepkit_module_files}
+  PROVIDES_MODULES    FREPKIT_VTK_MODULES
+  ENABLE_TESTS        ${FREPKIT_BUILD_TESTING}
+  WANT_BY_DEFAULT     ON
+  HIDE_MODULES_FROM_CACHE ON)
+
+vtk_module_build(
+  MODULES             ${FREPKIT_VTK_MODULES}
+  PACKAGE             FRepKit
+  VERSION             ${PROJECT_VERSION}
+  SOVERSION           ${PROJECT_VERSION_MAJOR}
+  INSTALL_HEADERS     OFF
+  ENABLE_WRAPPING     OFF
+  TEST_DIRECTORY_NAME Testing
+  # Relative destinations (ParaView's configuration leaves absolute install dirs behind);
+  # they also put the libraries in build/lib and the test drivers in build/bin.
+  ARCHIVE_DESTINATION lib
+  LIBRARY_DESTINATION lib
+  RUNTIME_DESTINATION bin
+  HEADERS_DESTINATION include/frepkit
+  CMAKE_DESTINATION   lib/cmake/frepkit
+  LICENSE_DESTINATION share/licenses/frepkit
+  HIERARCHY_DESTINATION lib/vtk/hierarchy/frepkit)
+
+unset(_frepkit_module_dir)
+unset(_frepkit_module_files)

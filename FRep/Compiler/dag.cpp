@@ -104,6 +104,10 @@ bool Dag::compute_never_negative(const Node& n) const
 {
   // "Never compares < 0": NaN and -0 are allowed, which is what the guards test (v < 0).
   auto nn = [this](NodeId id) { return nodes_[id].never_negative; };
+  if (is_boolean_op(n.op))
+  {
+    return true; // 1.0 or 0.0
+  }
   switch (n.op)
   {
     case Opcode::Const:
@@ -136,17 +140,6 @@ bool Dag::compute_never_negative(const Node& n) const
     case Opcode::Tanh:
     case Opcode::Atan:
       return nn(n.a);
-    case Opcode::Eq:
-    case Opcode::Ne:
-    case Opcode::Lt:
-    case Opcode::Le:
-    case Opcode::Gt:
-    case Opcode::Ge:
-    case Opcode::Truthy:
-    case Opcode::And:
-    case Opcode::Or:
-    case Opcode::Not:
-      return true;
     default:
       return false;
   }

@@ -21,10 +21,8 @@
 
 vtkStandardNewMacro(vtkFRepImplicitFunction);
 
-namespace
-{
 // Evaluation state of one thread: evaluators over the tape of one round (MTime).
-struct ThreadState
+struct vtkFRepImplicitFunction::ThreadState
 {
   ThreadState() = default;
   // vtkSMPThreadLocal creates each thread's state by copying an exemplar: a copy starts empty
@@ -45,6 +43,8 @@ struct ThreadState
   std::vector<double> Outputs;
 };
 
+namespace
+{
 // Points per batch call: bounds the temporary structure-of-arrays copy (4 doubles per point).
 constexpr vtkIdType BatchChunk = vtkIdType(1) << 20;
 }
@@ -170,33 +170,51 @@ std::string DescribeError(const frep::Tape& tape, int id, const vtkFRepObject* o
 }
 
 //------------------------------------------------------------------------------
-double vtkFRepImplicitFunction::EvaluateFunction(double x[3])
+bool vtkFRepImplicitFunction::BeginEvaluation(const char* caller, vtkMTimeType& key)
 {
   Internals& in = *this->Internal;
-  const vtkMTimeType key =
-    UpdateRound(this, in.Round, in.ErrorCount, in.ErrorWarned, in.ConfigurationReported);
+  key = UpdateRound(this, in.Round, in.ErrorCount, in.ErrorWarned, in.ConfigurationReported);
   vtkFRepObject* object = this->FRepObject;
-  if (!object || object->GetDimension() != 3 || !object->HasModel())
+  if (object && object->GetDimension() == 3 && object->HasModel())
   {
-    if (!in.ConfigurationReported.exchange(true))
-    {
-      vtkErrorMacro(<< "EvaluateFunction: "
-                    << (object && object->HasModel() ? "the object does not have 3 free coordinates"
-                                                     : "no FRep object (or an empty one) is set")
-                    << "; every point is outside");
-    }
-    return this->ErrorValue;
+    return true;
   }
+  if (!in.ConfigurationReported.exchange(true))
+  {
+    vtkErrorMacro(<< caller << ": "
+                  << (object && object->HasModel() ? "the object does not have 3 free coordinates"
+                                                   : "no FRep object (or an empty one) is set")
+                  << "; every point is outside");
+  }
+  return false;
+}
 
-  ThreadState& s = in.Threads.Local();
+//------------------------------------------------------------------------------
+vtkFRepImplicitFunction::ThreadState& vtkFRepImplicitFunction::ThreadStateFor(vtkMTimeType key)
+{
+  ThreadState& s = this->Internal->Threads.Local();
   if (!s.Point || s.Key != key)
   {
-    s.Tape = object->GetTape();
+    s.Tape = this->FRepObject->GetTape();
     s.Point = std::make_unique<frep::PointEvaluator>(s.Tape);
     s.Gradient.reset();
     s.Outputs.assign(s.Tape->outputs.size(), 0.0);
     s.Key = key;
   }
+  return s;
+}
+
+//------------------------------------------------------------------------------
+double vtkFRepImplicitFunction::EvaluateFunction(double x[3])
+{
+  vtkMTimeType key = 0;
+  if (!this->BeginEvaluation("EvaluateFunction", key))
+  {
+    return this->ErrorValue;
+  }
+  Internals& in = *this->Internal;
+  vtkFRepObject* object = this->FRepObject;
+  ThreadState& s = this->ThreadStateFor(key);
   const int error = s.Point->evaluate(std::span<const double>(x, 3), s.Outputs);
   const double f = s.Outputs[0];
   if (error == 0 && !std::isnan(f))
@@ -219,27 +237,14 @@ double vtkFRepImplicitFunction::EvaluateFunction(double x[3])
 void vtkFRepImplicitFunction::EvaluateGradient(double x[3], double g[3])
 {
   g[0] = g[1] = g[2] = 0.0;
-  Internals& in = *this->Internal;
-  const vtkMTimeType key =
-    UpdateRound(this, in.Round, in.ErrorCount, in.ErrorWarned, in.ConfigurationReported);
-  vtkFRepObject* object = this->FRepObject;
-  if (!object || object->GetDimension() != 3 || !object->HasModel())
+  vtkMTimeType key = 0;
+  if (!this->BeginEvaluation("EvaluateGradient", key))
   {
-    if (!in.ConfigurationReported.exchange(true))
-    {
-      vtkErrorMacro(<< "EvaluateGradient: no FRep object with 3 free coordinates is set");
-    }
     return;
   }
-  ThreadState& s = in.Threads.Local();
-  if (!s.Point || s.Key != key)
-  {
-    s.Tape = object->GetTape();
-    s.Point = std::make_unique<frep::PointEvaluator>(s.Tape);
-    s.Gradient.reset();
-    s.Outputs.assign(s.Tape->outputs.size(), 0.0);
-    s.Key = key;
-  }
+  Internals& in = *this->Internal;
+  vtkFRepObject* object = this->FRepObject;
+  ThreadState& s = this->ThreadStateFor(key);
   if (!s.Gradient)
   {
     s.Gradient = std::make_unique<frep::GradientEvaluator>(s.Tape);
@@ -282,20 +287,14 @@ void vtkFRepImplicitFunction::EvaluateFunction(vtkDataArray* input, vtkDataArray
   output->SetNumberOfComponents(1);
   output->SetNumberOfTuples(n);
 
-  Internals& in = *this->Internal;
-  const vtkMTimeType key =
-    UpdateRound(this, in.Round, in.ErrorCount, in.ErrorWarned, in.ConfigurationReported);
-  vtkFRepObject* object = this->FRepObject;
-  if (!object || object->GetDimension() != 3 || !object->HasModel())
+  vtkMTimeType key = 0;
+  if (!this->BeginEvaluation("EvaluateFunction", key))
   {
-    if (!in.ConfigurationReported.exchange(true))
-    {
-      vtkErrorMacro(<< "EvaluateFunction: no FRep object with 3 free coordinates is set; "
-                       "every point is outside");
-    }
     output->Fill(this->ErrorValue);
     return;
   }
+  Internals& in = *this->Internal;
+  vtkFRepObject* object = this->FRepObject;
 
   std::lock_guard<std::mutex> lock(in.BatchMutex);
   if (!in.Batch || in.BatchKey != key)

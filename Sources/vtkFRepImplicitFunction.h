@@ -114,8 +114,15 @@ private:
   vtkFRepImplicitFunction(const vtkFRepImplicitFunction&) = delete;
   void operator=(const vtkFRepImplicitFunction&) = delete;
 
+  struct ThreadState; // one thread's evaluators
   struct Internals;
   std::unique_ptr<Internals> Internal;
+
+  // Starts (or continues) an evaluation round; false, after reporting it once, when there is
+  // no usable 3-D object. `key` identifies the round's tape.
+  bool BeginEvaluation(const char* caller, vtkMTimeType& key);
+  // The calling thread's evaluators, rebuilt when the round's tape changed.
+  ThreadState& ThreadStateFor(vtkMTimeType key);
 };
 
 #endif

@@ -157,17 +157,10 @@ private:
   {
     check_child(object, node.operand);
   }
-  void check_node(const ast::Object& object, const ast::BinaryExpr& node)
-  {
-    check_child(object, node.lhs);
-    check_child(object, node.rhs);
-  }
-  void check_node(const ast::Object& object, const ast::CompareExpr& node)
-  {
-    check_child(object, node.lhs);
-    check_child(object, node.rhs);
-  }
-  void check_node(const ast::Object& object, const ast::LogicExpr& node)
+  /// BinaryExpr, CompareExpr, LogicExpr: two operands.
+  template<class Node>
+    requires requires(const Node& n) { n.lhs, n.rhs; }
+  void check_node(const ast::Object& object, const Node& node)
   {
     check_child(object, node.lhs);
     check_child(object, node.rhs);

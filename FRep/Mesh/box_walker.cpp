@@ -1,0 +1,190 @@
+// The interval-culled walk over a block of cells and the extraction driver shared by surfaces
+// and contours.
+#include "Mesh/extraction_common.h"
+
+#include "Eval/thread_pool.h"
+
+#include <chrono>
+
+namespace frep::mesh::detail
+{
+
+namespace
+{
+// Walkers run on the extraction's threads already: their batch evaluator stays on the caller.
+BatchOptions single_threaded()
+{
+  BatchOptions options;
+  options.threads = 1;
+  return options;
+}
+} // namespace
+
+BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+  const ExtractOptions& options)
+  : frame_(frame)
+  , options_(options)
+  , interval_(tape)
+  , batch_(tape, single_threaded())
+{
+}
+
+void BoxWalker::run(const CellBox& block, Piece& piece)
+{
+  builder_.begin(&piece);
+  walk(block);
+}
+
+void BoxWalker::walk(const CellBox& box)
+{
+  Piece& piece = builder_.piece();
+  if (options_.cull)
+  {
+    ++piece.boxes_tested;
+    const BoxSign sign = classify(enclose(interval_, frame_, box), options_.iso);
+    if (sign != BoxSign::Unknown)
+    {
+      ++piece.boxes_culled;
+      if (sign == BoxSign::Inside && options_.cap_boundary)
+      {
+        inside_box(box);
+      }
+      return;
+    }
+  }
+  const std::int64_t leaf_cells = options_.leaf_cells;
+  bool is_leaf = true;
+  for (int a = 0; a < frame_.dimension; ++a)
+  {
+    is_leaf = is_leaf && box.c1[a] - box.c0[a] <= leaf_cells;
+  }
+  if (is_leaf)
+  {
+    sample(box);
+    leaf(box);
+    return;
+  }
+  for (const CellBox& child : split(box, leaf_cells, frame_.dimension))
+  {
+    walk(child);
+  }
+}
+
+void BoxWalker::sample(const CellBox& box)
+{
+  std::array<std::int64_t, 3> n{ 1, 1, 1 };
+  for (int a = 0; a < frame_.dimension; ++a)
+  {
+    n[a] = box.c1[a] - box.c0[a] + 1;
+  }
+  const auto count = static_cast<std::size_t>(n[0] * n[1] * n[2]);
+  for (auto* v : { &xs_, &ys_, &zs_, &values_ })
+  {
+    v->resize(count);
+  }
+  std::size_t p = 0;
+  for (std::int64_t k = 0; k < n[2]; ++k)
+  {
+    const double z = frame_.dimension == 3 ? frame_.coord(2, box.c0[2] + k) : 0.0;
+    for (std::int64_t j = 0; j < n[1]; ++j)
+    {
+      const double y = frame_.coord(1, box.c0[1] + j);
+      for (std::int64_t i = 0; i < n[0]; ++i, ++p)
+      {
+        xs_[p] = frame_.coord(0, box.c0[0] + i);
+        ys_[p] = y;
+        zs_[p] = z;
+      }
+    }
+  }
+  const std::array<const double*, 3> inputs{ xs_.data(), ys_.data(), zs_.data() };
+  Piece& piece = builder_.piece();
+  piece.failed_samples += batch_.evaluate(
+    std::span<const double* const>(inputs.data(), static_cast<std::size_t>(frame_.dimension)),
+    count, values_.data());
+  piece.samples += count;
+  for (double& v : values_)
+  {
+    v -= options_.iso;
+  }
+}
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+} // namespace
+
+ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid& grid,
+  int dimension, const ExtractOptions& options,
+  const std::function<std::unique_ptr<BoxWalker>(const GridFrame&)>& make_walker)
+{
+  ExtractResult result;
+  result.surface.dimension = dimension;
+  result.error = validate(tape.get(), grid, dimension, options);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  const auto start = Clock::now();
+  const GridFrame frame(grid, dimension);
+  const std::shared_ptr<ThreadPool> pool = pool_for(options);
+  // Blocks of 4 leaves per axis: enough blocks to balance the threads, few enough that joining
+  // their pieces is cheap.
+  const std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
+
+  std::vector<std::unique_ptr<BoxWalker>> walkers(static_cast<std::size_t>(pool->size()));
+  std::vector<Piece> pieces(blocks_of(frame, block_cells).size());
+  std::size_t block_count = 0;
+  const bool finished = for_each_block(*pool, frame, block_cells, options.progress,
+    [&](std::size_t index, const CellBox& block, int slot)
+    {
+      auto& walker = walkers[static_cast<std::size_t>(slot)];
+      if (!walker)
+      {
+        walker = make_walker(frame);
+      }
+      walker->run(block, pieces[index]);
+    },
+    block_count);
+  if (!finished)
+  {
+    result.cancelled = true;
+    return result;
+  }
+  ExtractStatistics& stats = result.statistics;
+  stats.dense_samples = 1;
+  for (int a = 0; a < dimension; ++a)
+  {
+    stats.dense_samples *= static_cast<std::size_t>(grid.samples[a]);
+  }
+  for (const Piece& piece : pieces)
+  {
+    stats.boxes_tested += piece.boxes_tested;
+    stats.boxes_culled += piece.boxes_culled;
+    stats.samples += piece.samples;
+    stats.failed_samples += piece.failed_samples;
+  }
+  stats.seconds_extract = seconds_since(start);
+
+  const auto merge_start = Clock::now();
+  std::vector<std::uint64_t> keys;
+  result.error = merge_pieces(pieces, frame, block_cells, result.surface, keys);
+  stats.seconds_merge = seconds_since(merge_start);
+  if (!result.error.empty())
+  {
+    result.surface = Surface{};
+    result.surface.dimension = dimension;
+    return result;
+  }
+  const auto finish_start = Clock::now();
+  finish_points(tape, frame, keys, options, pool, result.surface, stats);
+  stats.seconds_normals = seconds_since(finish_start);
+  return result;
+}
+
+} // namespace frep::mesh::detail

@@ -1,0 +1,264 @@
+// What is computed per point once the mesh is joined: roots refined along their grid edge,
+// outward normals from the model's gradient, and the model's s[] attributes.
+#include "Mesh/extraction_common.h"
+
+#include "Eval/batch_evaluator.h"
+#include "Eval/gradient_evaluator.h"
+#include "Eval/point_evaluator.h"
+#include "Eval/thread_pool.h"
+
+#include <cmath>
+
+namespace frep::mesh::detail
+{
+namespace
+{
+
+constexpr std::size_t chunk_points = 4096;
+
+struct EdgeOfKey
+{
+  std::array<std::int64_t, 3> vertex{};
+  int kind = 3; ///< axis of the edge, 3 for a grid vertex
+};
+
+EdgeOfKey decode(std::uint64_t key, const GridFrame& frame)
+{
+  EdgeOfKey e;
+  e.kind = static_cast<int>(key % 4u);
+  std::uint64_t v = key / 4u;
+  for (int a = 0; a < frame.dimension; ++a)
+  {
+    e.vertex[a] = static_cast<std::int64_t>(v % static_cast<std::uint64_t>(frame.samples[a]));
+    v /= static_cast<std::uint64_t>(frame.samples[a]);
+  }
+  return e;
+}
+
+// Regula falsi (Illinois) on the grid edge of a crossing, keeping the bracket: the point stays on
+// its edge, so the mesh keeps its topology.
+void refine(PointEvaluator& evaluator, const GridFrame& frame, const EdgeOfKey& e, double iso,
+  int steps, double* point)
+{
+  std::array<double, 3> p{};
+  for (int a = 0; a < frame.dimension; ++a)
+  {
+    p[a] = frame.coord(a, e.vertex[a]);
+  }
+  const std::span<const double> in(p.data(), static_cast<std::size_t>(frame.dimension));
+  const int axis = e.kind;
+  double t0 = frame.coord(axis, e.vertex[axis]);
+  double t1 = frame.coord(axis, e.vertex[axis] + 1);
+  p[axis] = t0;
+  double g0 = evaluator.value(in) - iso;
+  p[axis] = t1;
+  double g1 = evaluator.value(in) - iso;
+  if (!std::isfinite(g0) || !std::isfinite(g1) || (g0 >= 0) == (g1 >= 0))
+  {
+    return;
+  }
+  double t = point[axis];
+  int same_side = 0;
+  for (int s = 0; s < steps; ++s)
+  {
+    t = (t0 * g1 - t1 * g0) / (g1 - g0);
+    p[axis] = t;
+    const double g = evaluator.value(in) - iso;
+    if (!std::isfinite(g) || g == 0.0)
+    {
+      break;
+    }
+    if ((g >= 0) == (g0 >= 0))
+    {
+      t0 = t;
+      g0 = g;
+      if (same_side == -1)
+      {
+        g1 *= 0.5;
+      }
+      same_side = -1;
+    }
+    else
+    {
+      t1 = t;
+      g1 = g;
+      if (same_side == 1)
+      {
+        g0 *= 0.5;
+      }
+      same_side = 1;
+    }
+  }
+  if (std::isfinite(t))
+  {
+    point[axis] = t;
+  }
+}
+
+// Normals where the gradient gives none (a failed or flat point): the area-weighted normals of
+// the triangles around the point.
+void fill_missing_normals(Surface& surface, const std::vector<unsigned char>& missing)
+{
+  std::vector<double> sum(surface.points.size(), 0.0);
+  const auto& x = surface.points;
+  for (std::size_t t = 0; t + 2 < surface.cells.size(); t += 3)
+  {
+    const std::uint32_t a = surface.cells[t], b = surface.cells[t + 1], c = surface.cells[t + 2];
+    if (!missing[a] && !missing[b] && !missing[c])
+    {
+      continue;
+    }
+    const double u[3] = { x[3 * b] - x[3 * a], x[3 * b + 1] - x[3 * a + 1], x[3 * b + 2] - x[3 * a + 2] };
+    const double v[3] = { x[3 * c] - x[3 * a], x[3 * c + 1] - x[3 * a + 1], x[3 * c + 2] - x[3 * a + 2] };
+    const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+    for (std::uint32_t id : { a, b, c })
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        sum[3 * id + static_cast<std::size_t>(k)] += n[k];
+      }
+    }
+  }
+  for (std::size_t p = 0; p < missing.size(); ++p)
+  {
+    if (missing[p])
+    {
+      const double length = std::sqrt(sum[3 * p] * sum[3 * p] + sum[3 * p + 1] * sum[3 * p + 1] +
+        sum[3 * p + 2] * sum[3 * p + 2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        surface.normals[3 * p + static_cast<std::size_t>(k)] =
+          length > 0 ? static_cast<float>(sum[3 * p + static_cast<std::size_t>(k)] / length) : 0.0f;
+      }
+    }
+  }
+}
+
+} // namespace
+
+void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+  const std::vector<std::uint64_t>& keys, const ExtractOptions& options,
+  const std::shared_ptr<ThreadPool>& pool,
+  Surface& surface, ExtractStatistics& /*statistics*/)
+{
+  const std::size_t count = surface.point_count();
+  const std::size_t chunks = (count + chunk_points - 1) / chunk_points;
+  const int dim = frame.dimension;
+  const bool normals = options.normals && dim == 3;
+  std::vector<unsigned char> missing(normals ? count : 0, 0);
+  if (normals)
+  {
+    surface.normals.assign(3 * count, 0.0f);
+  }
+  if (options.refine_steps > 0 || normals)
+  {
+    struct Scratch
+    {
+      std::unique_ptr<PointEvaluator> point;
+      std::unique_ptr<GradientEvaluator> gradient;
+    };
+    std::vector<Scratch> scratch(static_cast<std::size_t>(pool->size()));
+    pool->parallel_for(chunks,
+      [&](std::size_t chunk, int slot)
+      {
+        Scratch& s = scratch[static_cast<std::size_t>(slot)];
+        if (!s.point)
+        {
+          s.point = std::make_unique<PointEvaluator>(tape);
+          s.gradient = std::make_unique<GradientEvaluator>(tape);
+        }
+        std::array<double, 3> gradient{};
+        const std::size_t end = std::min(count, (chunk + 1) * chunk_points);
+        for (std::size_t p = chunk * chunk_points; p < end; ++p)
+        {
+          double* point = &surface.points[3 * p];
+          const EdgeOfKey e = keys[p] == unshared_key ? EdgeOfKey{} : decode(keys[p], frame);
+          if (options.refine_steps > 0 && keys[p] != unshared_key && e.kind < 3)
+          {
+            refine(*s.point, frame, e, options.iso, options.refine_steps, point);
+          }
+          if (!normals)
+          {
+            continue;
+          }
+          float* n = &surface.normals[3 * p];
+          if (keys[p] != unshared_key && e.kind == 3)
+          {
+            // A grid vertex is a point of a cap: the box's outward normal there.
+            double sum[3] = { 0, 0, 0 };
+            for (int a = 0; a < 3; ++a)
+            {
+              sum[a] = e.vertex[a] == 0 ? -1.0 : e.vertex[a] == frame.samples[a] - 1 ? 1.0 : 0.0;
+            }
+            const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+            for (int a = 0; a < 3; ++a)
+            {
+              n[a] = static_cast<float>(sum[a] / length);
+            }
+            continue;
+          }
+          s.gradient->evaluate(std::span<const double>(point, 3), gradient);
+          const double length = std::sqrt(
+            gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2]);
+          if (!(length > 0) || !std::isfinite(length))
+          {
+            missing[p] = 1;
+            continue;
+          }
+          // F grows inwards: the outward normal is -grad F.
+          for (int a = 0; a < 3; ++a)
+          {
+            n[a] = static_cast<float>(-gradient[static_cast<std::size_t>(a)] / length);
+          }
+        }
+      });
+  }
+  if (normals)
+  {
+    fill_missing_normals(surface, missing);
+  }
+  const int attribute_count = static_cast<int>(tape->outputs.size()) - 1;
+  surface.attribute_count = attribute_count;
+  if (options.attributes && attribute_count > 0 && count > 0)
+  {
+    BatchOptions batch_options;
+    batch_options.pool = pool;
+    BatchEvaluator batch(tape, batch_options);
+    std::vector<double> xyz[3];
+    for (int a = 0; a < dim; ++a)
+    {
+      xyz[a].resize(count);
+      for (std::size_t p = 0; p < count; ++p)
+      {
+        xyz[a][p] = surface.points[3 * p + static_cast<std::size_t>(a)];
+      }
+    }
+    const std::array<const double*, 3> inputs{ xyz[0].data(), xyz[1].data(),
+      dim == 3 ? xyz[2].data() : nullptr };
+    std::vector<double> values(count);
+    std::vector<std::vector<double>> s(static_cast<std::size_t>(attribute_count),
+      std::vector<double>(count));
+    std::vector<double*> outputs;
+    for (auto& column : s)
+    {
+      outputs.push_back(column.data());
+    }
+    batch.evaluate(std::span<const double* const>(inputs.data(), static_cast<std::size_t>(dim)),
+      count, values.data(), nullptr, outputs);
+    surface.attributes.resize(count * static_cast<std::size_t>(attribute_count));
+    for (std::size_t p = 0; p < count; ++p)
+    {
+      for (int k = 0; k < attribute_count; ++k)
+      {
+        surface.attributes[p * static_cast<std::size_t>(attribute_count) + static_cast<std::size_t>(k)] =
+          static_cast<float>(s[static_cast<std::size_t>(k)][p]);
+      }
+    }
+  }
+  else
+  {
+    surface.attributes.clear();
+  }
+}
+
+} // namespace frep::mesh::detail

@@ -137,10 +137,17 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
   // their pieces is cheap.
   const std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
 
+  CellBox range;
+  result.error = cell_range(frame, options, range);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  const std::vector<CellBox> blocks = blocks_of(range, dimension, block_cells);
   std::vector<std::unique_ptr<BoxWalker>> walkers(static_cast<std::size_t>(pool->size()));
-  std::vector<Piece> pieces(blocks_of(frame, block_cells).size());
+  std::vector<Piece> pieces(blocks.size());
   std::size_t block_count = 0;
-  const bool finished = for_each_block(*pool, frame, block_cells, options.progress,
+  const bool finished = for_each_block(*pool, blocks, options.progress,
     [&](std::size_t index, const CellBox& block, int slot)
     {
       auto& walker = walkers[static_cast<std::size_t>(slot)];
@@ -160,7 +167,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
   stats.dense_samples = 1;
   for (int a = 0; a < dimension; ++a)
   {
-    stats.dense_samples *= static_cast<std::size_t>(grid.samples[a]);
+    stats.dense_samples *= static_cast<std::size_t>(range.c1[a] - range.c0[a] + 1);
   }
   for (const Piece& piece : pieces)
   {
@@ -173,7 +180,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
 
   const auto merge_start = Clock::now();
   std::vector<std::uint64_t> keys;
-  result.error = merge_pieces(pieces, frame, block_cells, result.surface, keys);
+  result.error = merge_pieces(pieces, frame, range, block_cells, result.surface, keys);
   stats.seconds_merge = seconds_since(merge_start);
   if (!result.error.empty())
   {

@@ -156,7 +156,8 @@ std::vector<CellBox> split(const CellBox& box, std::int64_t leaf, int dimension)
 }
 
 std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
-  std::int64_t block_cells, Surface& surface, std::vector<std::uint64_t>& keys)
+  const CellBox& range, std::int64_t block_cells, Surface& surface,
+  std::vector<std::uint64_t>& keys)
 {
   std::size_t point_total = 0;
   std::size_t cell_total = 0;
@@ -181,9 +182,9 @@ std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
     std::uint64_t v = key / 4u;
     for (int a = 0; a < frame.dimension; ++a)
     {
-      const std::uint64_t coordinate = v % static_cast<std::uint64_t>(frame.samples[a]);
+      const auto coordinate = static_cast<std::int64_t>(v % static_cast<std::uint64_t>(frame.samples[a]));
       v /= static_cast<std::uint64_t>(frame.samples[a]);
-      if (a != kind && coordinate % static_cast<std::uint64_t>(block_cells) == 0)
+      if (a != kind && (coordinate - range.c0[a]) % block_cells == 0)
       {
         return true;
       }
@@ -230,12 +231,30 @@ std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
   return {};
 }
 
-std::vector<CellBox> blocks_of(const GridFrame& frame, std::int64_t block_cells)
+std::string cell_range(const GridFrame& frame, const ExtractOptions& options, CellBox& range)
 {
-  std::array<std::int64_t, 3> count{ 1, 1, 1 };
   for (int a = 0; a < frame.dimension; ++a)
   {
-    count[a] = (frame.cells(a) + block_cells - 1) / block_cells;
+    const std::int64_t cells = frame.cells(a);
+    range.c0[a] = options.cells_begin[a];
+    range.c1[a] = options.cells_end[a] == 0 ? cells : options.cells_end[a];
+    if (range.c0[a] < 0 || range.c1[a] > cells || range.c0[a] >= range.c1[a])
+    {
+      std::ostringstream message;
+      message << "cell range " << range.c0[a] << " .. " << range.c1[a] << " on axis "
+              << axis_name(a) << " is not inside the grid's 0 .. " << cells << " cells";
+      return message.str();
+    }
+  }
+  return {};
+}
+
+std::vector<CellBox> blocks_of(const CellBox& range, int dimension, std::int64_t block_cells)
+{
+  std::array<std::int64_t, 3> count{ 1, 1, 1 };
+  for (int a = 0; a < dimension; ++a)
+  {
+    count[a] = (range.c1[a] - range.c0[a] + block_cells - 1) / block_cells;
   }
   std::vector<CellBox> blocks;
   blocks.reserve(static_cast<std::size_t>(count[0] * count[1] * count[2]));
@@ -247,10 +266,10 @@ std::vector<CellBox> blocks_of(const GridFrame& frame, std::int64_t block_cells)
       {
         CellBox box;
         const std::array<std::int64_t, 3> b{ i, j, k };
-        for (int a = 0; a < frame.dimension; ++a)
+        for (int a = 0; a < dimension; ++a)
         {
-          box.c0[a] = b[a] * block_cells;
-          box.c1[a] = std::min(frame.cells(a), box.c0[a] + block_cells);
+          box.c0[a] = range.c0[a] + b[a] * block_cells;
+          box.c1[a] = std::min(range.c1[a], box.c0[a] + block_cells);
         }
         blocks.push_back(box);
       }
@@ -259,12 +278,11 @@ std::vector<CellBox> blocks_of(const GridFrame& frame, std::int64_t block_cells)
   return blocks;
 }
 
-bool for_each_block(ThreadPool& pool, const GridFrame& frame, std::int64_t block_cells,
+bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
   const std::function<bool(double)>& progress,
   const std::function<void(std::size_t index, const CellBox& block, int slot)>& body,
   std::size_t& block_count)
 {
-  const std::vector<CellBox> blocks = blocks_of(frame, block_cells);
   block_count = blocks.size();
   std::atomic<bool> cancelled{ false };
   std::atomic<std::size_t> done{ 0 };

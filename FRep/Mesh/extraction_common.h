@@ -115,18 +115,21 @@ private:
 /// between blocks of `block_cells` can repeat). Fills surface.points/cells and keys (per point).
 /// Returns an error message when the mesh exceeds 2^32 - 1 points.
 std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
-  std::int64_t block_cells, Surface& surface, std::vector<std::uint64_t>& keys);
+  const CellBox& range, std::int64_t block_cells, Surface& surface,
+  std::vector<std::uint64_t>& keys);
 
-/// Runs body(block, slot) for every block of at most `block_cells` cells per axis, spread over
-/// the pool, and reports progress (blocks done / blocks) through `progress`, never concurrently.
+/// Runs body(index, blocks[index], slot) for every block, spread over the pool, and reports progress (blocks done / blocks) through `progress`, never concurrently.
 /// Returns false when progress asked to cancel (the remaining blocks are skipped).
-bool for_each_block(ThreadPool& pool, const GridFrame& frame, std::int64_t block_cells,
+bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
   const std::function<bool(double)>& progress,
   const std::function<void(std::size_t index, const CellBox& block, int slot)>& body,
   std::size_t& block_count);
 
-/// Blocks of the grid, in the order for_each_block numbers them.
-std::vector<CellBox> blocks_of(const GridFrame& frame, std::int64_t block_cells);
+/// The cells to polygonise: the options' range clipped to the grid (empty: an error message).
+std::string cell_range(const GridFrame& frame, const ExtractOptions& options, CellBox& range);
+
+/// Blocks of at most block_cells cells per axis covering `range`, starting at its corner.
+std::vector<CellBox> blocks_of(const CellBox& range, int dimension, std::int64_t block_cells);
 
 /// Computes what the options ask for on the merged points: root refinement along the grid edge
 /// (3-D and 2-D), outward normals (3-D), s[] attributes.

@@ -1,9 +1,8 @@
 // What is computed per point once the mesh is joined: roots refined along their grid edge,
-// outward normals from the model's gradient, and the model's s[] attributes.
+// outward normals from the model's gradient (central differences of F), and s[] attributes.
 #include "Mesh/extraction_common.h"
 
 #include "Eval/batch_evaluator.h"
-#include "Eval/gradient_evaluator.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/thread_pool.h"
 
@@ -134,6 +133,97 @@ void fill_missing_normals(Surface& surface, const std::vector<unsigned char>& mi
   }
 }
 
+// Outward normals by central differences of F, evaluated in batches (vectorised, on the pool):
+// six evaluations per point cost less than one forward-mode gradient of a long tape, and the
+// step (1e-3 of a cell) is far below the grid's resolution and far above rounding.
+void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+  const std::vector<std::uint64_t>& keys, const std::shared_ptr<ThreadPool>& pool,
+  Surface& surface, std::vector<unsigned char>& missing)
+{
+  const std::size_t count = surface.point_count();
+  BatchOptions batch_options;
+  batch_options.pool = pool;
+  BatchEvaluator batch(tape, batch_options);
+  std::array<double, 3> h{};
+  for (int a = 0; a < 3; ++a)
+  {
+    h[a] = 1e-3 * frame.step[a];
+  }
+  constexpr std::size_t chunk = 1 << 15;
+  std::array<std::vector<double>, 3> in;
+  std::vector<double> values;
+  std::vector<std::size_t> ids;
+  for (std::size_t begin = 0; begin < count; begin += chunk)
+  {
+    const std::size_t end = std::min(count, begin + chunk);
+    ids.clear();
+    for (auto& column : in)
+    {
+      column.clear();
+    }
+    for (std::size_t p = begin; p < end; ++p)
+    {
+      if (keys[p] != unshared_key && keys[p] % 4u == 3u)
+      {
+        continue; // a grid vertex of a cap: done by the caller
+      }
+      ids.push_back(p);
+      for (int d = 0; d < 6; ++d)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          const double offset = d / 2 == a ? (d % 2 == 0 ? h[a] : -h[a]) : 0.0;
+          in[a].push_back(surface.points[3 * p + static_cast<std::size_t>(a)] + offset);
+        }
+      }
+    }
+    values.resize(in[0].size());
+    const std::array<const double*, 3> inputs{ in[0].data(), in[1].data(), in[2].data() };
+    batch.evaluate(inputs, values.size(), values.data());
+    for (std::size_t q = 0; q < ids.size(); ++q)
+    {
+      const double* v = &values[6 * q];
+      // F grows inwards: the outward normal is -grad F.
+      const double g[3] = { (v[1] - v[0]) / (2 * h[0]), (v[3] - v[2]) / (2 * h[1]),
+        (v[5] - v[4]) / (2 * h[2]) };
+      const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      float* n = &surface.normals[3 * ids[q]];
+      if (!(length > 0) || !std::isfinite(length))
+      {
+        missing[ids[q]] = 1;
+        continue;
+      }
+      for (int a = 0; a < 3; ++a)
+      {
+        n[a] = static_cast<float>(g[a] / length);
+      }
+    }
+  }
+}
+
+// A grid vertex is a point of a cap: the box's outward normal there.
+void cap_normals(const GridFrame& frame, const std::vector<std::uint64_t>& keys, Surface& surface)
+{
+  for (std::size_t p = 0; p < keys.size(); ++p)
+  {
+    if (keys[p] == unshared_key || keys[p] % 4u != 3u)
+    {
+      continue;
+    }
+    const EdgeOfKey e = decode(keys[p], frame);
+    double sum[3] = { 0, 0, 0 };
+    for (int a = 0; a < 3; ++a)
+    {
+      sum[a] = e.vertex[a] == 0 ? -1.0 : e.vertex[a] == frame.samples[a] - 1 ? 1.0 : 0.0;
+    }
+    const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    for (int a = 0; a < 3; ++a)
+    {
+      surface.normals[3 * p + static_cast<std::size_t>(a)] = static_cast<float>(sum[a] / length);
+    }
+  }
+}
+
 } // namespace
 
 void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
@@ -142,79 +232,36 @@ void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
   Surface& surface, ExtractStatistics& /*statistics*/)
 {
   const std::size_t count = surface.point_count();
-  const std::size_t chunks = (count + chunk_points - 1) / chunk_points;
   const int dim = frame.dimension;
-  const bool normals = options.normals && dim == 3;
-  std::vector<unsigned char> missing(normals ? count : 0, 0);
-  if (normals)
+  if (options.refine_steps > 0)
   {
-    surface.normals.assign(3 * count, 0.0f);
-  }
-  if (options.refine_steps > 0 || normals)
-  {
-    struct Scratch
-    {
-      std::unique_ptr<PointEvaluator> point;
-      std::unique_ptr<GradientEvaluator> gradient;
-    };
-    std::vector<Scratch> scratch(static_cast<std::size_t>(pool->size()));
+    const std::size_t chunks = (count + chunk_points - 1) / chunk_points;
+    std::vector<std::unique_ptr<PointEvaluator>> evaluators(static_cast<std::size_t>(pool->size()));
     pool->parallel_for(chunks,
       [&](std::size_t chunk, int slot)
       {
-        Scratch& s = scratch[static_cast<std::size_t>(slot)];
-        if (!s.point)
+        auto& evaluator = evaluators[static_cast<std::size_t>(slot)];
+        if (!evaluator)
         {
-          s.point = std::make_unique<PointEvaluator>(tape);
-          s.gradient = std::make_unique<GradientEvaluator>(tape);
+          evaluator = std::make_unique<PointEvaluator>(tape);
         }
-        std::array<double, 3> gradient{};
         const std::size_t end = std::min(count, (chunk + 1) * chunk_points);
         for (std::size_t p = chunk * chunk_points; p < end; ++p)
         {
-          double* point = &surface.points[3 * p];
-          const EdgeOfKey e = keys[p] == unshared_key ? EdgeOfKey{} : decode(keys[p], frame);
-          if (options.refine_steps > 0 && keys[p] != unshared_key && e.kind < 3)
+          if (keys[p] != unshared_key && keys[p] % 4u != 3u)
           {
-            refine(*s.point, frame, e, options.iso, options.refine_steps, point);
-          }
-          if (!normals)
-          {
-            continue;
-          }
-          float* n = &surface.normals[3 * p];
-          if (keys[p] != unshared_key && e.kind == 3)
-          {
-            // A grid vertex is a point of a cap: the box's outward normal there.
-            double sum[3] = { 0, 0, 0 };
-            for (int a = 0; a < 3; ++a)
-            {
-              sum[a] = e.vertex[a] == 0 ? -1.0 : e.vertex[a] == frame.samples[a] - 1 ? 1.0 : 0.0;
-            }
-            const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
-            for (int a = 0; a < 3; ++a)
-            {
-              n[a] = static_cast<float>(sum[a] / length);
-            }
-            continue;
-          }
-          s.gradient->evaluate(std::span<const double>(point, 3), gradient);
-          const double length = std::sqrt(
-            gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2]);
-          if (!(length > 0) || !std::isfinite(length))
-          {
-            missing[p] = 1;
-            continue;
-          }
-          // F grows inwards: the outward normal is -grad F.
-          for (int a = 0; a < 3; ++a)
-          {
-            n[a] = static_cast<float>(-gradient[static_cast<std::size_t>(a)] / length);
+            refine(*evaluator, frame, decode(keys[p], frame), options.iso, options.refine_steps,
+              &surface.points[3 * p]);
           }
         }
       });
   }
-  if (normals)
+  if (options.normals && dim == 3)
   {
+    surface.normals.assign(3 * count, 0.0f);
+    std::vector<unsigned char> missing(count, 0);
+    cap_normals(frame, keys, surface);
+    difference_normals(tape, frame, keys, pool, surface, missing);
     fill_missing_normals(surface, missing);
   }
   const int attribute_count = static_cast<int>(tape->outputs.size()) - 1;

@@ -52,6 +52,11 @@ struct ExtractOptions
   int leaf_cells = 8;
   /// Refuse grids with more samples than this (the time would be unbounded) with an error.
   double max_samples = 68719476736.0; // 4096^3
+  /// Only the cells [cells_begin, cells_end) per axis (a piece of a distributed run; the pieces
+  /// of a partition together give the whole mesh, their shared points duplicated). The caps
+  /// stay on the whole grid's box. cells_end 0 on an axis = up to the last cell.
+  std::array<std::int64_t, 3> cells_begin{ 0, 0, 0 };
+  std::array<std::int64_t, 3> cells_end{ 0, 0, 0 };
   /// Worker threads (0 = all cores) when no pool is given.
   int threads = 0;
   std::shared_ptr<ThreadPool> pool;

@@ -200,6 +200,39 @@ TEST(SurfaceExtraction, CullingGivesTheDenseMeshAndThreadsDoNotMatter)
   EXPECT_EQ(b.surface.cells, c.surface.cells);
 }
 
+TEST(SurfaceExtraction, PiecesTogetherGiveTheWholeMesh)
+{
+  // A shape cut by the box, so caps are involved; 3 uneven slabs along z and 2 along x.
+  const auto tape = compile(sphere_model);
+  Grid grid = cube_grid(6, 61);
+  grid.lo[2] = -2.0;
+  const ExtractResult whole = extract_surface(tape, grid);
+  ASSERT_TRUE(whole.ok());
+  Surface joined;
+  for (auto [z0, z1] : { std::pair<int, int>{ 0, 17 }, { 17, 40 }, { 40, 60 } })
+  {
+    for (auto [x0, x1] : { std::pair<int, int>{ 0, 31 }, { 31, 60 } })
+    {
+      ExtractOptions piece;
+      piece.cells_begin = { x0, 0, z0 };
+      piece.cells_end = { x1, 0, z1 };
+      const ExtractResult r = extract_surface(tape, grid, piece);
+      ASSERT_TRUE(r.ok()) << r.error;
+      const auto offset = static_cast<std::uint32_t>(joined.point_count());
+      joined.points.insert(joined.points.end(), r.surface.points.begin(), r.surface.points.end());
+      for (std::uint32_t id : r.surface.cells)
+      {
+        joined.cells.push_back(id + offset);
+      }
+    }
+  }
+  EXPECT_EQ(canonical_triangles(joined), canonical_triangles(whole.surface));
+  ExtractOptions outside;
+  outside.cells_begin = { 0, 0, 50 };
+  outside.cells_end = { 0, 0, 70 };
+  EXPECT_NE(extract_surface(tape, grid, outside).error.find("cell range"), std::string::npos);
+}
+
 TEST(SurfaceExtraction, ShapeCutByTheBoxIsCapped)
 {
   // A sphere of radius 5 in the box [-2.5, 2.5]^3 fills it: the mesh is the box itself.

@@ -9,13 +9,16 @@
 #include "vtkFRepObject.h"
 #include "vtkFRepSampler.h"
 #include "vtkFRepSlice.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkHyperFunSource.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 
 #include "Eval/point_evaluator.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -115,6 +118,30 @@ int TestFRepSlicePipeline(int, char*[])
   FREPKIT_CHECK(failures, Mismatches(image, full, { 0, 1, 2 }, { { 3, 0.5 } }) == 0);
   FREPKIT_CHECK(failures, sourceRuns->Count == 1 && samplerRuns->Count == 1);
   const double centre05 = image->GetPointData()->GetScalars()->GetTuple1(0);
+
+  // the image contours as VTK expects (F = 0): the sphere of radius 2 + 0 + 0.5
+  {
+    vtkNew<vtkFRepSampler> fine;
+    fine->SetInputConnection(slice->GetOutputPort());
+    fine->SetModelBounds(-3, 3, -3, 3, -3, 3);
+    fine->SetSampleDimensions(61, 61, 61);
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputConnection(fine->GetOutputPort());
+    contour->SetValue(0, 0.0);
+    contour->Update();
+    vtkPolyData* surface = contour->GetOutput();
+    double worst = 0;
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      surface->GetPoint(i, p);
+      worst = std::max(worst, std::abs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 2.5));
+    }
+    std::cout << "contour: " << surface->GetNumberOfPoints() << " points, radius error " << worst
+              << std::endl;
+    FREPKIT_CHECK(failures, surface->GetNumberOfPoints() > 1000 && worst < 0.01);
+    FREPKIT_CHECK(failures, sourceRuns->Count == 1); // the slice's output was up to date
+  }
 
   // nothing changed: nothing runs again
   sampler->Update();

@@ -125,11 +125,9 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
 
   frep::mesh::Grid grid;
-  const bool bounds_set = this->ModelBounds[0] != 0 || this->ModelBounds[1] != 0 ||
-    this->ModelBounds[2] != 0 || this->ModelBounds[3] != 0 || this->ModelBounds[4] != 0 ||
-    this->ModelBounds[5] != 0;
   for (int a = 0; a < dimension; ++a)
   {
+    const bool bounds_set = this->ModelBounds[2 * a] <= this->ModelBounds[2 * a + 1];
     grid.lo[a] = bounds_set ? this->ModelBounds[2 * a] : description.Ranges[a][0];
     grid.hi[a] = bounds_set ? this->ModelBounds[2 * a + 1] : description.Ranges[a][1];
     grid.samples[a] = this->SampleDimensions[a];

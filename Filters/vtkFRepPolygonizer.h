@@ -45,9 +45,10 @@ public:
 
   ///@{
   /**
-   * The box (xmin, xmax, ymin, ymax, zmin, zmax) sampled. Default: not set (all zero), then the
-   * object's coordinate intervals are used (vtkFRepObject::GetEvaluationDescription().Ranges).
-   * For a 2-D object the z values are ignored.
+   * The box (xmin, xmax, ymin, ymax, zmin, zmax) sampled. Default (0, -1, 0, -1, 0, -1): an
+   * axis whose min > max takes the object's interval of that coordinate
+   * (vtkFRepObject::GetEvaluationDescription().Ranges), as vtkFRepSampler does. min == max is
+   * an error. For a 2-D object the z values are ignored.
    */
   vtkSetVector6Macro(ModelBounds, double);
   vtkGetVector6Macro(ModelBounds, double);
@@ -158,7 +159,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double ModelBounds[6] = { 0, 0, 0, 0, 0, 0 };
+  double ModelBounds[6] = { 0, -1, 0, -1, 0, -1 };
   int SampleDimensions[3] = { 64, 64, 64 };
   double IsoValue = 0.0;
   vtkTypeBool CapBoundary = 1;

@@ -110,8 +110,8 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
   this->EvaluatedSamples = this->CulledBoxes = this->FailedSamples = 0;
   if (!input || !input->HasModel())
   {
-    // An upstream error (already reported there) leaves nothing to mesh.
-    vtkWarningMacro("the input has no model: empty output");
+    // An upstream error (already reported there) leaves nothing to mesh: no cascade.
+    vtkDebugMacro("the input has no model: empty output");
     return 1;
   }
   const vtkFRepObject::EvaluationDescription description = input->GetEvaluationDescription();

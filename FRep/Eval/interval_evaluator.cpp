@@ -14,9 +14,11 @@
 #include "Eval/tape_check.h"
 
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -39,13 +41,24 @@ struct Range
   bool nan = false;
 };
 
-double down(double x)
-{
-  return std::nextafter(x, -kInf);
-}
+/// std::nextafter(x, +inf) without the library call (it was 6% of meshing a long tape): the next
+/// double up is one unit more in the bit pattern for positives, one less for negatives.
 double up(double x)
 {
-  return std::nextafter(x, kInf);
+  if (!(x < kInf))
+  {
+    return x; // +inf, NaN
+  }
+  if (x == 0.0)
+  {
+    return std::numeric_limits<double>::denorm_min();
+  }
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
+}
+double down(double x)
+{
+  return -up(-x);
 }
 
 Range whole(bool nan = true)

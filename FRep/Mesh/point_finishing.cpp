@@ -1,5 +1,5 @@
 // What is computed per point once the mesh is joined: roots refined along their grid edge,
-// outward normals from the model's gradient (central differences of F), and s[] attributes.
+// outward normals from the model's gradient (differences of F), and s[] attributes.
 #include "Mesh/extraction_common.h"
 
 #include "Eval/batch_evaluator.h"
@@ -133,13 +133,15 @@ void fill_missing_normals(Surface& surface, const std::vector<unsigned char>& mi
   }
 }
 
-// Outward normals by central differences of F, evaluated in batches (vectorised, on the pool):
-// six evaluations per point cost less than one forward-mode gradient of a long tape, and the
-// step (1e-3 of a cell) is far below the grid's resolution and far above rounding.
+// Outward normals by forward differences of F, evaluated in batches (vectorised, on the pool):
+// four evaluations per point (F at the point and one step along each axis) cost far less than a
+// forward-mode gradient of a long tape; the step (1e-3 of a cell) is far below the grid's
+// resolution (its truncation error is invisible in a normal) and far above rounding.
 void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
   const std::vector<std::uint64_t>& keys, const std::shared_ptr<ThreadPool>& pool,
   Surface& surface, std::vector<unsigned char>& missing)
 {
+  constexpr int probes = 4; // the point, then +h along x, y, z
   const std::size_t count = surface.point_count();
   BatchOptions batch_options;
   batch_options.pool = pool;
@@ -165,15 +167,14 @@ void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame
     {
       if (keys[p] != unshared_key && keys[p] % 4u == 3u)
       {
-        continue; // a grid vertex of a cap: done by the caller
+        continue; // a grid vertex of a cap: done by cap_normals
       }
       ids.push_back(p);
-      for (int d = 0; d < 6; ++d)
+      for (int d = 0; d < probes; ++d)
       {
         for (int a = 0; a < 3; ++a)
         {
-          const double offset = d / 2 == a ? (d % 2 == 0 ? h[a] : -h[a]) : 0.0;
-          in[a].push_back(surface.points[3 * p + static_cast<std::size_t>(a)] + offset);
+          in[a].push_back(surface.points[3 * p + static_cast<std::size_t>(a)] + (d == a + 1 ? h[a] : 0.0));
         }
       }
     }
@@ -182,10 +183,9 @@ void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame
     batch.evaluate(inputs, values.size(), values.data());
     for (std::size_t q = 0; q < ids.size(); ++q)
     {
-      const double* v = &values[6 * q];
+      const double* v = &values[probes * q];
       // F grows inwards: the outward normal is -grad F.
-      const double g[3] = { (v[1] - v[0]) / (2 * h[0]), (v[3] - v[2]) / (2 * h[1]),
-        (v[5] - v[4]) / (2 * h[2]) };
+      const double g[3] = { (v[0] - v[1]) / h[0], (v[0] - v[2]) / h[1], (v[0] - v[3]) / h[2] };
       const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
       float* n = &surface.normals[3 * ids[q]];
       if (!(length > 0) || !std::isfinite(length))

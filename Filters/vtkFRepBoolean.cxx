@@ -11,6 +11,7 @@
 #include "Compiler/combine.h"
 
 #include <algorithm>
+#include <exception>
 #include <set>
 #include <sstream>
 #include <string>
@@ -211,10 +212,20 @@ int vtkFRepBoolean::RequestData(vtkInformation*,
   parameters.a0 = this->BlendDisplacement;
   parameters.a1 = this->BlendParameters[0];
   parameters.a2 = this->BlendParameters[1];
-  const frep::CombineResult combined = frep::combine(EngineOperation(this->Operation),
-    frep::Operand{ a->GetModel(), a->GetSpecialisation() },
-    frep::Operand{ b->GetModel(), b->GetSpecialisation() },
-    parameters);
+  frep::CombineResult combined;
+  try
+  {
+    combined = frep::combine(EngineOperation(this->Operation),
+      frep::Operand{ a->GetModel(), a->GetSpecialisation() },
+      frep::Operand{ b->GetModel(), b->GetSpecialisation() },
+      parameters);
+  }
+  catch (const std::exception& e)
+  {
+    // Bad operands are error values; an exception here is an engine bug or exhausted memory,
+    // which must not take the pipeline down either.
+    combined.error = std::string("combining the operands failed: ") + e.what();
+  }
   if (!combined.ok())
   {
     vtkErrorMacro(<< combined.error << "; the output is empty");
@@ -226,7 +237,9 @@ int vtkFRepBoolean::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-void vtkFRepBoolean::CopyCoordinates(vtkFRepObject* a, vtkFRepObject* b, vtkFRepObject* output) const
+void vtkFRepBoolean::CopyCoordinates(vtkFRepObject* a,
+  vtkFRepObject* b,
+  vtkFRepObject* output) const
 {
   const bool product = this->Operation == VTK_CARTESIAN_PRODUCT;
   std::set<std::string> taken;

@@ -75,7 +75,10 @@ public:
   void SetOperationToBlendUnion() { this->SetOperation(VTK_BLEND_UNION); }
   void SetOperationToBlendIntersection() { this->SetOperation(VTK_BLEND_INTERSECTION); }
   void SetOperationToCartesianProduct() { this->SetOperation(VTK_CARTESIAN_PRODUCT); }
-  /** "Union", "Intersection", "Difference", "BlendUnion", "BlendIntersection", "CartesianProduct". */
+  /**
+   * "Union", "Intersection", "Difference", "BlendUnion", "BlendIntersection" or
+   * "CartesianProduct".
+   */
   const char* GetOperationAsString() const;
   ///@}
 

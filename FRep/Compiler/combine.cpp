@@ -60,8 +60,8 @@ struct OperationContext
       return;
     }
     out->errors.push_back(TapeError{ message, {} });
-    out->effects.push_back(compiler::Effect{
-      false, condition.node(out->dag), static_cast<int>(out->errors.size()) });
+    out->effects.push_back(
+      compiler::Effect{ false, condition.node(out->dag), static_cast<int>(out->errors.size()) });
   }
   void abort_if(bool condition, const char* message)
   {
@@ -95,8 +95,8 @@ Expr apply_operation(Operation operation,
       args[3].real = p.a1;
       args[4].real = p.a2;
       OperationContext context{ &out };
-      const FunctionId id = operation == Operation::BlendUnion ? FunctionId::BlendUni
-                                                               : FunctionId::BlendInt;
+      const FunctionId id =
+        operation == Operation::BlendUnion ? FunctionId::BlendUni : FunctionId::BlendInt;
       return *library::call_generic<Expr, OperationContext>(id, std::span(args), context);
     }
   }
@@ -114,8 +114,7 @@ public:
     sides_[1].operand = std::move(b);
     for (Side& side : sides_)
     {
-      side.free =
-        free_coordinates(side.operand.model->x_dim(), side.operand.specialisation);
+      side.free = free_coordinates(side.operand.model->x_dim(), side.operand.specialisation);
     }
     const auto k_a = static_cast<int>(sides_[0].free.size());
     sides_[1].first = is_pointwise(operation) ? 0 : k_a;
@@ -268,14 +267,14 @@ CombineResult combine(Operation operation,
   if (is_pointwise(operation) && k_a != k_b)
   {
     result.error = what + "the operands must have the same number of free coordinates, but " +
-      a.model->name() + " has " + std::to_string(k_a) + " and " + b.model->name() + " has " +
-      std::to_string(k_b);
+                   a.model->name() + " has " + std::to_string(k_a) + " and " + b.model->name() +
+                   " has " + std::to_string(k_b);
     return result;
   }
 
   auto impl = std::make_unique<Model::Impl>();
-  impl->name = std::string(operation_name(operation)) + "(" + a.model->name() + ", " +
-    b.model->name() + ")";
+  impl->name =
+    std::string(operation_name(operation)) + "(" + a.model->name() + ", " + b.model->name() + ")";
   impl->s_dim = std::max(a.model->s_dim(), b.model->s_dim());
   impl->a_dim = 0;
   auto source = std::make_unique<CombinedSource>(operation, std::move(a), std::move(b), parameters);

@@ -27,8 +27,8 @@ public:
   }
 
   /// Wraps `function` (or the function it wraps, so that joins of joins stay one call deep).
-  static std::shared_ptr<const OpaqueFunction> wrap(
-    std::shared_ptr<const OpaqueFunction> function, int offset)
+  static std::shared_ptr<const OpaqueFunction> wrap(std::shared_ptr<const OpaqueFunction> function,
+    int offset)
   {
     if (offset == 0)
     {
@@ -43,7 +43,8 @@ public:
 
   std::unique_ptr<Scratch> make_scratch() const override { return inner_->make_scratch(); }
 
-  int evaluate(Scratch* scratch, std::span<const double> inputs,
+  int evaluate(Scratch* scratch,
+    std::span<const double> inputs,
     std::span<double> outputs) const override
   {
     const int id = inner_->evaluate(scratch, inputs, outputs);
@@ -67,7 +68,7 @@ std::vector<NodeId> append_tape(Lowered& out, const Tape& tape, std::span<const 
   if (inputs.size() != tape.input_count)
   {
     throw std::invalid_argument("append_tape: the tape has " + std::to_string(tape.input_count) +
-      " inputs, " + std::to_string(inputs.size()) + " given");
+                                " inputs, " + std::to_string(inputs.size()) + " given");
   }
   eval::check_tape(tape, "append_tape");
   Dag& dag = out.dag;
@@ -107,7 +108,8 @@ std::vector<NodeId> append_tape(Lowered& out, const Tape& tape, std::span<const 
           args.push_back(read(slot));
         }
         const NodeId call = dag.call(RenumberedErrors::wrap(site.function, error_offset),
-          std::move(args), static_cast<std::uint32_t>(site.outputs.size()));
+          std::move(args),
+          static_cast<std::uint32_t>(site.outputs.size()));
         out.effects.push_back(Effect{ true, call, 0 });
         const std::vector<NodeId>& results = dag.call_of(call).outputs;
         for (std::size_t k = 0; k < site.outputs.size(); ++k)

@@ -75,8 +75,7 @@ std::vector<std::vector<double>> RandomPoints(int dim, int count)
 }
 
 // Points where the object's tape and the reference tape differ (bit for bit, F only).
-int Mismatches(vtkFRepObject* object, const std::shared_ptr<const frep::Tape>& reference,
-  int dim)
+int Mismatches(vtkFRepObject* object, const std::shared_ptr<const frep::Tape>& reference, int dim)
 {
   if (!object || !object->HasModel() || !reference || object->GetDimension() != dim)
   {
@@ -128,8 +127,8 @@ int TestFRepBoolean(int, char*[])
   FREPKIT_CHECK(failures, boolean->GetOperation() == vtkFRepBoolean::VTK_UNION);
   FREPKIT_CHECK(failures, std::string(boolean->GetOperationAsString()) == "Union");
   FREPKIT_CHECK(failures, boolean->GetBlendDisplacement() == 1.0);
-  FREPKIT_CHECK(failures,
-    boolean->GetBlendParameters()[0] == 1.0 && boolean->GetBlendParameters()[1] == 1.0);
+  FREPKIT_CHECK(
+    failures, boolean->GetBlendParameters()[0] == 1.0 && boolean->GetBlendParameters()[1] == 1.0);
   boolean->SetOperation(42);
   FREPKIT_CHECK(failures, boolean->GetOperation() == vtkFRepBoolean::VTK_CARTESIAN_PRODUCT);
   boolean->SetOperation(-1);
@@ -160,9 +159,11 @@ int TestFRepBoolean(int, char*[])
     { &vtkFRepBoolean::SetOperationToUnion, "s1 | s2", "union(ball, other)" },
     { &vtkFRepBoolean::SetOperationToIntersection, "s1 & s2", "intersection(ball, other)" },
     { &vtkFRepBoolean::SetOperationToDifference, "s1 \\ s2", "difference(ball, other)" },
-    { &vtkFRepBoolean::SetOperationToBlendUnion, "hfBlendUni(s1, s2, 0.5, 2, 0.7)",
+    { &vtkFRepBoolean::SetOperationToBlendUnion,
+      "hfBlendUni(s1, s2, 0.5, 2, 0.7)",
       "blend_union(ball, other)" },
-    { &vtkFRepBoolean::SetOperationToBlendIntersection, "hfBlendInt(s1, s2, 0.5, 2, 0.7)",
+    { &vtkFRepBoolean::SetOperationToBlendIntersection,
+      "hfBlendInt(s1, s2, 0.5, 2, 0.7)",
       "blend_intersection(ball, other)" },
   };
   boolean->SetBlendDisplacement(0.5);
@@ -220,8 +221,8 @@ int TestFRepBoolean(int, char*[])
     vtkNew<vtkFRepObject> deep;
     deep->DeepCopy(boolean->GetOutput());
     FREPKIT_CHECK(failures, deep->GetModel() == boolean->GetOutput()->GetModel());
-    FREPKIT_CHECK(failures, SameBits(ValueAt(deep, { 0.1, 0.2, 0.3 }),
-                              ValueAt(boolean->GetOutput(), { 0.1, 0.2, 0.3 })));
+    FREPKIT_CHECK(failures,
+      SameBits(ValueAt(deep, { 0.1, 0.2, 0.3 }), ValueAt(boolean->GetOutput(), { 0.1, 0.2, 0.3 })));
   }
 
   // --- re-execution when an input's parameter changes, and only then
@@ -250,8 +251,8 @@ int TestFRepBoolean(int, char*[])
   FREPKIT_CHECK(failures, events->ErrorText.find("same dimension") != std::string::npos);
   FREPKIT_CHECK(failures,
     events->ErrorText.find("3 free coordinates (x1, x2, x3) of ball") != std::string::npos);
-  FREPKIT_CHECK(failures,
-    events->ErrorText.find("2 free coordinates (x1, x2) of disc") != std::string::npos);
+  FREPKIT_CHECK(
+    failures, events->ErrorText.find("2 free coordinates (x1, x2) of disc") != std::string::npos);
   FREPKIT_CHECK(failures, !boolean->GetOutput()->HasModel());
   FREPKIT_CHECK(failures, boolean->GetOutput()->GetDimension() == 0);
   FREPKIT_CHECK(failures, boolean->GetOutput()->GetTape() == nullptr);

@@ -135,7 +135,7 @@ std::string two_balls(const std::string& result)
          "  s1 = 1.5^2 - ((x[1] - 0.5)^2 + x[2]^2 + x[3]^2);\n"
          "  s2 = 1.2^2 - ((x[1] + 0.7)^2 + (x[2] - 0.2)^2 + x[3]^2);\n"
          "  my_model = " +
-    result + ";\n}\n";
+         result + ";\n}\n";
 }
 
 Operand ball(const char* text, double radius)
@@ -205,8 +205,8 @@ TEST(CombineModel, DescribesItself)
   EXPECT_EQ(u->object_index(), -1);
   EXPECT_TRUE(u->is_compiled());
   EXPECT_GT(u->node_count(), 0u);
-  EXPECT_EQ(combine_balls(Operation::BlendIntersection)->name(),
-    "blend_intersection(ball_a, ball_b)");
+  EXPECT_EQ(
+    combine_balls(Operation::BlendIntersection)->name(), "blend_intersection(ball_a, ball_b)");
   EXPECT_FALSE(u->tape()->can_fail);
 }
 
@@ -226,9 +226,9 @@ TEST(CombineModel, CartesianProductOfDiscAndIntervalIsACylinder)
   const auto points = sample_points(3, 600, 3);
   expect_same_tapes(cylinder->tape(), r.model->tape(), points);
   PointEvaluator pe(r.model->tape());
-  EXPECT_GT(pe.value(std::vector<double>{ 0.0, 0.5, 1.9 }), 0.0);  // inside
-  EXPECT_LT(pe.value(std::vector<double>{ 0.0, 0.5, 2.1 }), 0.0);  // above the top
-  EXPECT_LT(pe.value(std::vector<double>{ 1.1, 0.0, 0.0 }), 0.0);  // beside the disc
+  EXPECT_GT(pe.value(std::vector<double>{ 0.0, 0.5, 1.9 }), 0.0); // inside
+  EXPECT_LT(pe.value(std::vector<double>{ 0.0, 0.5, 2.1 }), 0.0); // above the top
+  EXPECT_LT(pe.value(std::vector<double>{ 1.1, 0.0, 0.0 }), 0.0); // beside the disc
 
   // The operands' own free-coordinate order decides the result's coordinates: with the disc's
   // coordinates swapped (and its x[1] written differently) result coordinate 0 is disc x[2].
@@ -247,8 +247,9 @@ TEST(CombineModel, CartesianProductOfDiscAndIntervalIsACylinder)
 TEST(CombineModel, OperandSpecialisationFixesCoordinatesAndParameters)
 {
   // A 4-D operand cut at x[4] = 0.25 is a 3-D operand.
-  Operand morph{ compile_text(
-    "morph(x[4], a[1]) { morph = a[1] - (x[1]^2 + x[2]^2 + x[3]^2) - x[4]; }"), {} };
+  Operand morph{
+    compile_text("morph(x[4], a[1]) { morph = a[1] - (x[1]^2 + x[2]^2 + x[3]^2) - x[4]; }"), {}
+  };
   morph.specialisation.parameters = { 2.0 };
   morph.specialisation.fixed = { std::nullopt, std::nullopt, std::nullopt, 0.25 };
   CombineResult r = combine(Operation::Union, morph, ball(BallB, 1.2));
@@ -297,8 +298,8 @@ TEST(CombineModel, SpecialisingEqualsEvaluatingAtTheFixedValue)
     PointEvaluator side(product->specialise(at_x));
     for (const auto& p : sample_points(2, 100, 13))
     {
-      EXPECT_TRUE(same_bits(cylinder.value(std::vector<double>{ p[0], p[1], z }),
-        section.value(p)));
+      EXPECT_TRUE(
+        same_bits(cylinder.value(std::vector<double>{ p[0], p[1], z }), section.value(p)));
       EXPECT_TRUE(same_bits(cylinder.value(std::vector<double>{ z, p[0], p[1] }), side.value(p)));
     }
   }
@@ -318,8 +319,9 @@ TEST(CombineModel, SpecialisingEqualsEvaluatingAtTheFixedValue)
 TEST(CombineModel, CombinedModelsCombineAgain)
 {
   auto u = combine_balls(Operation::Union);
-  Operand third{ compile_text("third(x[3], a[1]) { third = 1 - ((x[1] - 2)^2 + x[2]^2 + x[3]^2); }"),
-    {} };
+  Operand third{
+    compile_text("third(x[3], a[1]) { third = 1 - ((x[1] - 2)^2 + x[2]^2 + x[3]^2); }"), {}
+  };
   CombineResult r = combine(Operation::Difference, Operand{ u, {} }, third);
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(r.model->name(), "difference(union(ball_a, ball_b), third)");
@@ -365,8 +367,7 @@ TEST(CombineModel, ErrorsOfBothOperandsKeepTheirMessages)
   EXPECT_EQ(be.evaluate(columns, 4, values.data(), ids.data()), 3u);
   for (std::size_t i = 0; i < 4; ++i)
   {
-    EXPECT_EQ(static_cast<int>(ids[i]),
-      pe.evaluate(std::vector<double>{ x1[i], x2[i] }, out));
+    EXPECT_EQ(static_cast<int>(ids[i]), pe.evaluate(std::vector<double>{ x1[i], x2[i] }, out));
   }
 }
 
@@ -396,17 +397,18 @@ TEST(CombineModel, InterpretedOperandsReportTheirErrorsThroughTheJoinedTable)
     std::vector<double> out(1);
     const int sqrt_error = pe.evaluate(std::vector<double>{ 10.0, -1.0 }, out);
     ASSERT_GT(sqrt_error, 0);
-    EXPECT_EQ(tape->errors[static_cast<std::size_t>(sqrt_error - 1)].message,
-      messages::kNegativeSqrt);
+    EXPECT_EQ(
+      tape->errors[static_cast<std::size_t>(sqrt_error - 1)].message, messages::kNegativeSqrt);
     EXPECT_EQ(tape->errors[static_cast<std::size_t>(sqrt_error - 1)].location.line, 7);
     const int division = pe.evaluate(std::vector<double>{ 0.0, 1.0 }, out);
     ASSERT_GT(division, 0);
-    EXPECT_EQ(tape->errors[static_cast<std::size_t>(division - 1)].message,
-      messages::kDivisionByZero);
+    EXPECT_EQ(
+      tape->errors[static_cast<std::size_t>(division - 1)].message, messages::kDivisionByZero);
     // Values where nothing fails: the interpreted operand gives n = 4 for x1 = 10.
     EXPECT_EQ(pe.evaluate(std::vector<double>{ 10.0, 4.0 }, out), 0);
-    auto reference = compile_text(std::string("my_model(x[2], a[1]) { s1 = 2 - 4; s2 = 1 / 10; "
-                                              "my_model = ") +
+    auto reference = compile_text(
+      std::string("my_model(x[2], a[1]) { s1 = 2 - 4; s2 = 1 / 10; "
+                  "my_model = ") +
       (op == Operation::Intersection ? "s1 & s2" : "hfBlendUni(s1, s2, 1, 1, 1)") + "; }");
     PointEvaluator pr(reference->tape());
     EXPECT_TRUE(same_bits(out[0], pr.value(std::vector<double>{ 0.0, 0.0 })));
@@ -419,8 +421,8 @@ TEST(CombineModel, InterpretedOperandsReportTheirErrorsThroughTheJoinedTable)
     PointEvaluator pn(nested_tape);
     const int id = pn.evaluate(std::vector<double>{ 10.0, -1.0 }, out);
     ASSERT_GT(id, 0);
-    EXPECT_EQ(nested_tape->errors[static_cast<std::size_t>(id - 1)].message,
-      messages::kNegativeSqrt);
+    EXPECT_EQ(
+      nested_tape->errors[static_cast<std::size_t>(id - 1)].message, messages::kNegativeSqrt);
     const int log_id = pn.evaluate(std::vector<double>{ -6.0, 1.0 }, out);
     ASSERT_GT(log_id, 0);
     EXPECT_EQ(nested_tape->errors[static_cast<std::size_t>(log_id - 1)].location.line, 3);
@@ -511,7 +513,8 @@ TEST(CombineModel, IntervalsEncloseSampledValues)
           p.push_back(i.lo + (i.hi - i.lo) * unit(rng));
         }
         const double v = pe.value(p);
-        EXPECT_TRUE(r.value.contains(v)) << v << " not in [" << r.value.lo << ", " << r.value.hi << "]";
+        EXPECT_TRUE(r.value.contains(v))
+          << v << " not in [" << r.value.lo << ", " << r.value.hi << "]";
       }
     }
   }

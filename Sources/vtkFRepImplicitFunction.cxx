@@ -162,7 +162,12 @@ std::string DescribeError(const frep::Tape& tape, int id, const vtkFRepObject* o
   }
   frep::Diagnostic d;
   auto model = object ? object->GetModel() : nullptr;
-  d.file = model && model->program() ? model->program()->file : std::string();
+  // A composed model has no program of its own; its errors name their operand's file.
+  d.file = tape.errors[id - 1].file;
+  if (d.file.empty() && model && model->program())
+  {
+    d.file = model->program()->file;
+  }
   d.location = tape.errors[id - 1].location;
   d.message = tape.errors[id - 1].message;
   return d.format();

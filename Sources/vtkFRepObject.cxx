@@ -431,7 +431,13 @@ void vtkFRepObject::DeepCopy(vtkDataObject* src)
     return;
   }
   this->Model.reset();
-  if (obj->Model)
+  if (obj->Model && !obj->Model->program())
+  {
+    // A composed model (frep::combine) has no program to recompile; it is immutable and owns
+    // no per-evaluation state, so sharing it is as good as a copy.
+    this->Model = obj->Model;
+  }
+  else if (obj->Model)
   {
     // A model is immutable and owns no per-evaluation state, so a copy is a recompilation of
     // the same (immutable) program: the same code, owned by this object alone.

@@ -20,7 +20,7 @@
  * The data type id is the generic VTK_DATA_OBJECT (a new id breaks ParaView's data information,
  * see DESIGN.md). ShallowCopy shares the model (ParaView copies every output through
  * NewInstance + ShallowCopy); DeepCopy compiles a model of its own from the same (immutable)
- * program. The metadata is mirrored into field data arrays, the only part ParaView's
+ * program, or shares a composed model (frep::combine), which has no program. The metadata is mirrored into field data arrays, the only part ParaView's
  * information panel and domains can see:
  *   FRepDimension (int, 1 tuple: free coordinates), FRepModelDimension (int),
  *   FRepObjectName (string), FRepCoordinateNames (string, per free coordinate),
@@ -68,7 +68,7 @@ public:
   ///@{
   /**
    * ShallowCopy shares the (immutable) model; DeepCopy compiles a new model from the same
-   * program. Both copy the coordinates, fixed values, parameters and field data. A source
+   * program (a composed model, which has none, is shared). Both copy the coordinates, fixed values, parameters and field data. A source
    * that is not a vtkFRepObject only has its field data copied (as vtkDataObject does).
    */
   void ShallowCopy(vtkDataObject* src) override;

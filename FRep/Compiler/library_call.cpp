@@ -227,7 +227,7 @@ private:
   {
     if (seen_.insert(std::make_tuple(std::string(message), at.line, at.column)).second)
     {
-      result.push_back(TapeError{ message, at });
+      result.push_back(TapeError{ message, at, program_.file });
     }
   }
 

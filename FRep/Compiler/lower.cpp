@@ -159,7 +159,7 @@ public:
     {
       return it->second;
     }
-    out_.errors.push_back(TapeError{ message, location });
+    out_.errors.push_back(TapeError{ message, location, program_.file });
     const int id = static_cast<int>(out_.errors.size());
     error_ids_.emplace(key, id);
     return id;

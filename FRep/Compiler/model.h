@@ -1,6 +1,9 @@
 // A compiled HyperFun object: the program's expression DAG for one object, immutable and shared
 // between threads. Specialising it (fixing some coordinates, setting a[]) yields a Tape, the
 // straight-line code every evaluator runs. This is how slices of n-D models are evaluated.
+// A model can also be an operation on two other models (set operations, blends, the Cartesian
+// product: combine.h); such a composed model has no program of its own but specialises and
+// evaluates like any other.
 #pragma once
 
 #include "Compiler/tape.h"
@@ -51,10 +54,14 @@ public:
   static CompileResult compile(std::shared_ptr<const ast::Program> program, int object_index,
     const CompileOptions& options = {});
 
+  /// The object's name; for a composed model the operation and the operands' names, e.g.
+  /// "union(ball, box)".
   const std::string& name() const;
   int x_dim() const;
   int a_dim() const;
   int s_dim() const;
+  /// The program the model was compiled from and the object's index in it; null and -1 for a
+  /// composed model (combine.h), which is not one object of one program.
   std::shared_ptr<const ast::Program> program() const;
   int object_index() const;
 
@@ -62,11 +69,13 @@ public:
   /// on x): its tapes then contain one opaque Call to the interpreter. This describes the default
   /// specialisation (all coordinates free, a[] = 0); specialise() decides again for its own
   /// constants (fixing the coordinate a loop depends on makes it compilable, and vice versa).
+  /// A composed model is compiled when both operands' tapes are.
   bool is_compiled() const;
   /// Why the object is interpreted (empty when compiled).
   const std::string& fallback_reason() const;
 
-  /// Number of DAG nodes of the default specialisation (for tests and reports).
+  /// Number of DAG nodes of the default specialisation (for tests and reports; for a composed
+  /// model, the nodes of the DAG its operands' tapes were joined in).
   std::size_t node_count() const;
 
   /// A tape with the given coordinates fixed and parameters set: the object is executed
@@ -84,7 +93,7 @@ public:
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
-  struct Impl;
+  struct Impl; ///< internal (Compiler/model_impl.h)
 
 private:
   explicit Model(std::unique_ptr<Impl> impl);

@@ -87,6 +87,9 @@ struct TapeError
 {
   std::string message;
   SourceLocation location;
+  /// The program file `location` refers to (empty: unknown). A composed model's tape holds the
+  /// errors of several programs. (Initialised so that {message, location} stays complete.)
+  std::string file{};
 };
 
 /// Interface of an opaque function evaluated one point at a time. It is shared by threads:

@@ -14,6 +14,7 @@
 #include "Eval/tape_check.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cfloat>
 #include <climits>
@@ -588,6 +589,17 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
     throw std::invalid_argument("IntervalEvaluator::evaluate: box has fewer intervals than inputs");
   }
   IntervalResult result;
+  // operand_count per opcode, looked up without a call per instruction (hot on long tapes).
+  static const std::array<std::uint8_t, 256> operands_by_opcode = []
+  {
+    std::array<std::uint8_t, 256> table{};
+    for (int op = 0; op <= static_cast<int>(Opcode::Call); ++op)
+    {
+      table[static_cast<std::size_t>(op)] =
+        static_cast<std::uint8_t>(operand_count(static_cast<Opcode>(op)));
+    }
+    return table;
+  }();
   const auto get = [&](std::uint32_t s) { return Range{ slots_[s], may_nan_[s] != 0 }; };
   const auto put = [&](std::uint32_t s, const Range& r)
   {
@@ -613,8 +625,9 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
       put(ins.out, (in.lo <= in.hi) ? Range{ in, false } : whole(true));
       continue;
     }
-    const Range a = eval::reads_a(op) ? get(ins.a) : Range{};
-    const Range b = eval::reads_b(op) ? get(ins.b) : Range{};
+    const int operands = operands_by_opcode[static_cast<std::size_t>(op)];
+    const Range a = operands >= 1 ? get(ins.a) : Range{};
+    const Range b = operands >= 2 ? get(ins.b) : Range{};
     if (op == Opcode::ErrorIf)
     {
       result.may_fail = result.may_fail || may_be_nonzero(a);

@@ -5,6 +5,7 @@
 #include "vtkFRepPolygonizer.h"
 #include "vtkHyperFunSource.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFeatureEdges.h"
@@ -166,6 +167,40 @@ int TestFRepPolygonizer(int, char*[])
     length += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]));
   }
   FREPKIT_CHECK(failures, std::abs(length - 6 * pi) < 0.01 * 6 * pi);
+
+  // Progress is reported; an abort requested from a progress observer empties the output.
+  {
+    vtkNew<vtkFRepPolygonizer> watched;
+    watched->SetInputConnection(source->GetOutputPort());
+    watched->SetSampleDimensions(160, 160, 160);
+    int progress_events = 0;
+    bool abort = false;
+    vtkNew<vtkCallbackCommand> on_progress;
+    struct State
+    {
+      int* events;
+      bool* abort;
+    } state{ &progress_events, &abort };
+    on_progress->SetClientData(&state);
+    on_progress->SetCallback(
+      [](vtkObject* caller, unsigned long, void* data, void*)
+      {
+        auto* st = static_cast<State*>(data);
+        ++*st->events;
+        if (*st->abort)
+        {
+          static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+        }
+      });
+    watched->AddObserver(vtkCommand::ProgressEvent, on_progress);
+    watched->Update();
+    FREPKIT_CHECK(failures, progress_events > 2);
+    FREPKIT_CHECK(failures, watched->GetOutput()->GetNumberOfPolys() > 0);
+    abort = true;
+    watched->Modified();
+    watched->Update();
+    FREPKIT_CHECK(failures, watched->GetOutput()->GetNumberOfPolys() == 0);
+  }
 
   // Bad requests: clear errors, empty outputs, no crash, nothing slow.
   events->Observe(mesher);

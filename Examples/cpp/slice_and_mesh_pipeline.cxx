@@ -38,6 +38,7 @@ int main(int argc, char** argv)
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputConnection(mesher->GetOutputPort());
   writer->SetFileName(argv[2]);
+  writer->SetDataModeToBinary(); // inline: Debian 12's expat cannot read VTK 9.2's appended data
   if (!writer->Write())
   {
     return 1;

@@ -25,7 +25,8 @@ void ProgressBar::update(double fraction)
     return;
   }
   const int percent = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 100.0);
-  if (percent == percent_)
+  // Workers report in any order: the bar only moves forward.
+  if (percent <= percent_)
   {
     return;
   }

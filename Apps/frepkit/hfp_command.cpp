@@ -170,10 +170,9 @@ int run_cli_layers(const HfpArguments& a,
   output.commit();
   timer.stage("Time to Slice and Write the CLI File");
 
-  if (failed > 0)
+  if (const std::string warning = failed_samples_warning(failed); !warning.empty())
   {
-    std::cerr << "frepkit: warning: " << failed
-              << " samples raised a run-time error in the model and were taken as outside\n";
+    std::cerr << "frepkit: warning: " << warning << '\n';
   }
   std::cout << "\n" << layers << " layers have been successfully written\n";
   std::cout << "triangles: " << -layers << '\n';
@@ -325,7 +324,8 @@ int run_hfp(const std::vector<std::string>& args)
   }
   timer.stage("Time to Write Files");
 
-  if (const std::string warning = failed_samples_warning(result.statistics); !warning.empty())
+  if (const std::string warning = failed_samples_warning(result.statistics.failed_samples);
+      !warning.empty())
   {
     std::cerr << "frepkit: warning: " << warning << '\n';
   }

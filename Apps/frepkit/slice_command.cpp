@@ -18,8 +18,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -37,22 +35,6 @@ enum class SliceKind
   Contour, ///< 2 free: .vtp lines
   Mesh     ///< 3 free: a mesh format
 };
-
-std::string lower_extension(const std::string& path)
-{
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-  {
-    return {};
-  }
-  std::string extension = path.substr(dot);
-  std::transform(extension.begin(),
-    extension.end(),
-    extension.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 const char* const kSliceFormats = "2 free coordinates: .png (picture), .vti (sampled F), .vtp "
                                   "(contour lines); 3 free: .stl .obj .ply .wrl .pov .vtp "
@@ -288,12 +270,10 @@ int run_slice(const SliceOptions& options)
   }
   output.commit();
 
-  if (failed > 0)
+  if (const std::string warning = failed_samples_warning(failed); !warning.empty())
   {
-    std::cerr << "frepkit: warning: " << failed
-              << " samples raised a run-time error in the model and were taken as outside"
-              << (kind == SliceKind::Png ? " (magenta in the picture)" : "")
-              << " (see 'frepkit eval' to locate them)\n";
+    std::cerr << "frepkit: warning: " << warning
+              << (kind == SliceKind::Png ? "; they are magenta in the picture" : "") << '\n';
   }
   if (!options.quiet)
   {

@@ -53,13 +53,13 @@ std::string describe_statistics(const frep::mesh::ExtractStatistics& statistics)
   return line;
 }
 
-std::string failed_samples_warning(const frep::mesh::ExtractStatistics& statistics)
+std::string failed_samples_warning(std::size_t failed)
 {
-  if (statistics.failed_samples == 0)
+  if (failed == 0)
   {
     return {};
   }
-  return std::to_string(statistics.failed_samples) +
+  return std::to_string(failed) +
          " samples raised a run-time error in the model and were taken as outside (see "
          "'frepkit eval' to locate them)";
 }

@@ -27,7 +27,7 @@ frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
 /// "boxes 1234 tested, 800 culled; samples 1.2e+06 of 2.1e+06 dense (57.1%); failed samples 0"
 std::string describe_statistics(const frep::mesh::ExtractStatistics& statistics);
 
-/// The warning for samples that raised run-time errors (empty when there were none).
-std::string failed_samples_warning(const frep::mesh::ExtractStatistics& statistics);
+/// The warning for `failed` samples that raised run-time errors (empty when there were none).
+std::string failed_samples_warning(std::size_t failed);
 
 } // namespace frepkit

@@ -39,7 +39,8 @@ int write_surface_file(SurfaceJob job)
   write_mesh(document, job.format, job.ascii, output.stream());
   output.commit();
 
-  if (const std::string warning = failed_samples_warning(result.statistics); !warning.empty())
+  if (const std::string warning = failed_samples_warning(result.statistics.failed_samples);
+      !warning.empty())
   {
     std::cerr << "frepkit: warning: " << warning << '\n';
   }

@@ -149,8 +149,8 @@ TEST(MeshWriters, FormatFromExtension)
 }
 
 /// A 2-D contour from points and segments (a, b) with the inside on the left.
-frep::mesh::Surface contour(
-  const std::vector<std::array<double, 2>>& points, const std::vector<std::uint32_t>& segments)
+frep::mesh::Surface contour(const std::vector<std::array<double, 2>>& points,
+  const std::vector<std::uint32_t>& segments)
 {
   frep::mesh::Surface s;
   s.dimension = 2;
@@ -165,8 +165,8 @@ frep::mesh::Surface contour(
 TEST(ContourLoops, ClosedLoopsKeepTheirOrientation)
 {
   // A counter-clockwise square and a clockwise hole inside it.
-  const auto c = contour({ { -2, -2 }, { 2, -2 }, { 2, 2 }, { -2, 2 }, { -1, -1 }, { -1, 1 },
-                           { 1, 1 }, { 1, -1 } },
+  const auto c = contour(
+    { { -2, -2 }, { 2, -2 }, { 2, 2 }, { -2, 2 }, { -1, -1 }, { -1, 1 }, { 1, 1 }, { 1, -1 } },
     { 0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4 });
   const auto loops = close_contour_loops(c, { -5, -5 }, { 5, 5 }, false);
   ASSERT_EQ(loops.size(), 2u);
@@ -193,8 +193,8 @@ TEST(ContourLoops, ChainsCutByTheBoxAreClosedAlongIt)
 
 TEST(ContourLoops, BoxInsideWithoutCrossingsIsTheBox)
 {
-  const auto hole = contour({ { 0.4, 0.4 }, { 0.4, 0.6 }, { 0.6, 0.6 }, { 0.6, 0.4 } },
-    { 0, 1, 1, 2, 2, 3, 3, 0 });
+  const auto hole =
+    contour({ { 0.4, 0.4 }, { 0.4, 0.6 }, { 0.6, 0.6 }, { 0.6, 0.4 } }, { 0, 1, 1, 2, 2, 3, 3, 0 });
   const auto loops = close_contour_loops(hole, { 0, 0 }, { 1, 1 }, true);
   ASSERT_EQ(loops.size(), 2u);
   EXPECT_DOUBLE_EQ(loops[1].signed_area, 1.0);
@@ -246,8 +246,10 @@ TEST(HfpArguments, BoundingBoxForms)
 {
   EXPECT_EQ(hfp({ "f", "-b", "5" }).arguments.box, (std::array<double, 6>{ -5, -5, -5, 5, 5, 5 }));
   EXPECT_EQ(hfp({ "f", "-b", "-5" }).arguments.box, (std::array<double, 6>{ -5, -5, -5, 5, 5, 5 }));
-  EXPECT_EQ(hfp({ "f", "-b", "3,-1" }).arguments.box, (std::array<double, 6>{ -1, -1, -1, 3, 3, 3 }));
-  EXPECT_EQ(hfp({ "f", "-b", "1,2,-3" }).arguments.box, (std::array<double, 6>{ -1, -2, -3, 1, 2, 3 }));
+  EXPECT_EQ(
+    hfp({ "f", "-b", "3,-1" }).arguments.box, (std::array<double, 6>{ -1, -1, -1, 3, 3, 3 }));
+  EXPECT_EQ(
+    hfp({ "f", "-b", "1,2,-3" }).arguments.box, (std::array<double, 6>{ -1, -2, -3, 1, 2, 3 }));
   EXPECT_EQ(hfp({ "f", "-b", "-5,-5,-5,5,5,5" }).arguments.box,
     (std::array<double, 6>{ -5, -5, -5, 5, 5, 5 }));
   std::string messages;
@@ -256,7 +258,8 @@ TEST(HfpArguments, BoundingBoxForms)
   EXPECT_NE(messages.find("\"1,2,3,4\" is not a valid argument for <-b>.\nUsing default values.\n"),
     std::string::npos);
   EXPECT_EQ(hfp({ "f", "-b", "0,0,0,1,-1,1" }).arguments.box,
-    (std::array<double, 6>{ -10, -10, -10, 10, 10, 10 })) << "min >= max falls back";
+    (std::array<double, 6>{ -10, -10, -10, 10, 10, 10 }))
+    << "min >= max falls back";
 }
 
 TEST(HfpArguments, GridIsClampedCells)
@@ -284,8 +287,8 @@ TEST(HfpArguments, MappingAsHfp)
   a = hfp({ "f", "-x", "X,X,Z" }, &messages).arguments; // Y keeps position 1 = X's: invalid
   EXPECT_EQ(a.xyz_mapping, (std::array<int, 3>{ 0, 1, 2 }));
   EXPECT_EQ(a.x_constants.size(), 3u);
-  EXPECT_NE(messages.find("is not a valid argument for <-x>.\nUsing default value.\n"),
-    std::string::npos);
+  EXPECT_NE(
+    messages.find("is not a valid argument for <-x>.\nUsing default value.\n"), std::string::npos);
 }
 
 TEST(HfpArguments, OutputsAndMissingValues)

@@ -36,7 +36,7 @@ std::string read_all(const std::string& path)
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-template <typename T>
+template<typename T>
 T little(const std::string& bytes, std::size_t offset)
 {
   if (offset + sizeof(T) > bytes.size())
@@ -58,8 +58,8 @@ public:
   }
   std::uint32_t add(float x, float y, float z)
   {
-    const auto [it, inserted] = ids_.try_emplace({ x, y, z },
-      static_cast<std::uint32_t>(surface_.points.size() / 3));
+    const auto [it, inserted] =
+      ids_.try_emplace({ x, y, z }, static_cast<std::uint32_t>(surface_.points.size() / 3));
     if (inserted)
     {
       surface_.points.insert(surface_.points.end(), { x, y, z });
@@ -76,7 +76,8 @@ Loaded read_stl(const std::string& bytes)
 {
   Loaded loaded;
   PointMerger merger(loaded.surface);
-  const bool binary = bytes.size() >= 84 &&
+  const bool binary =
+    bytes.size() >= 84 &&
     bytes.size() == 84 + 50 * static_cast<std::size_t>(little<std::uint32_t>(bytes, 80));
   if (binary)
   {
@@ -161,7 +162,7 @@ Loaded read_ply(const std::string& bytes)
       }
     }
     else if (first == "property" && element == "face" &&
-      line != "property list uchar int vertex_indices")
+             line != "property list uchar int vertex_indices")
     {
       throw std::runtime_error("unexpected face property: " + line);
     }

@@ -31,6 +31,8 @@ constexpr FormatEntry kFormats[] = {
   { ".vtp", MeshFormat::Vtp },
 };
 
+} // namespace
+
 std::string lower_extension(const std::string& path)
 {
   const auto slash = path.find_last_of('/');
@@ -46,8 +48,6 @@ std::string lower_extension(const std::string& path)
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
 }
-
-} // namespace
 
 std::optional<MeshFormat> mesh_format_for(const std::string& path)
 {

@@ -20,6 +20,9 @@ enum class MeshFormat
   Vtp   ///< VTK XML PolyData (VTK builds only)
 };
 
+/// The extension of the file name in `path`, lower-case, with its dot (".stl"), or "".
+std::string lower_extension(const std::string& path);
+
 /// The format for `path`'s extension (case-insensitive), or nullopt.
 std::optional<MeshFormat> mesh_format_for(const std::string& path);
 

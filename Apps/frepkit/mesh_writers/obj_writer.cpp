@@ -40,11 +40,7 @@ void write_obj(const MeshDocument& mesh, std::ostream& out)
       }
     }
     text += '\n';
-    if (text.size() > kTextFlushBytes)
-    {
-      out << text;
-      text.clear();
-    }
+    flush_if_large(text, out);
   }
   if (normals)
   {
@@ -57,11 +53,7 @@ void write_obj(const MeshDocument& mesh, std::ostream& out)
         append_number(text, surface.normals[3 * p + static_cast<std::size_t>(k)]);
       }
       text += '\n';
-      if (text.size() > kTextFlushBytes)
-      {
-        out << text;
-        text.clear();
-      }
+      flush_if_large(text, out);
     }
   }
   for (std::size_t t = 0; t < surface.cell_count(); ++t)
@@ -80,11 +72,7 @@ void write_obj(const MeshDocument& mesh, std::ostream& out)
       }
     }
     text += '\n';
-    if (text.size() > kTextFlushBytes)
-    {
-      out << text;
-      text.clear();
-    }
+    flush_if_large(text, out);
   }
   out << text;
 }

@@ -23,15 +23,6 @@ void append_vector(std::string& text, const T* values)
   text += '>';
 }
 
-void flush_if_large(std::string& text, std::ostream& out)
-{
-  if (text.size() > kTextFlushBytes)
-  {
-    out << text;
-    text.clear();
-  }
-}
-
 } // namespace
 
 void write_pov(const MeshDocument& mesh, std::ostream& out)

@@ -68,11 +68,7 @@ void write_stl_ascii(const MeshDocument& mesh, std::ostream& out)
       text += '\n';
     }
     text += "  endloop\n endfacet\n";
-    if (text.size() > kTextFlushBytes)
-    {
-      out << text;
-      text.clear();
-    }
+    flush_if_large(text, out);
   }
   text += "endsolid " + name + "\n";
   out << text;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <charconv>
+#include <ostream>
 #include <string>
 
 namespace frepkit
@@ -31,5 +32,14 @@ inline void append_number(std::string& out, unsigned long long value)
 
 /// Text is built in a buffer and handed to the stream in large pieces.
 constexpr std::size_t kTextFlushBytes = 1 << 20;
+
+inline void flush_if_large(std::string& text, std::ostream& out)
+{
+  if (text.size() > kTextFlushBytes)
+  {
+    out << text;
+    text.clear();
+  }
+}
 
 } // namespace frepkit

@@ -11,15 +11,6 @@ namespace frepkit
 namespace
 {
 
-void flush_if_large(std::string& text, std::ostream& out)
-{
-  if (text.size() > kTextFlushBytes)
-  {
-    out << text;
-    text.clear();
-  }
-}
-
 template<typename T>
 void append_triple(std::string& text, const T* values)
 {

@@ -98,7 +98,7 @@ void write_vtp(const MeshDocument& mesh, std::ostream& out)
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(poly);
   writer->SetWriteToOutputString(true);
-  writer->SetDataModeToBinary(); // base64 inside the XML: the output is a string
+  writer->SetDataModeToBinary(); // inline base64: Debian 12's expat cannot read appended data back
   if (writer->Write() != 1)
   {
     throw std::runtime_error("vtkXMLPolyDataWriter failed");

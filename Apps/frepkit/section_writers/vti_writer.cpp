@@ -50,7 +50,7 @@ void write_vti(std::ostream& out, const SampledSection& section)
   vtkNew<vtkXMLImageDataWriter> writer;
   writer->SetInputData(image);
   writer->SetWriteToOutputString(true);
-  writer->SetDataModeToBinary(); // base64 inside the XML: the output is a string
+  writer->SetDataModeToBinary(); // inline base64: Debian 12's expat cannot read appended data back
   if (writer->Write() != 1)
   {
     throw std::runtime_error("vtkXMLImageDataWriter failed");

@@ -1,45 +1,28 @@
 // frepkit: FRepKit's command-line tool. Exit codes: 0 ok, 1 user error, 2 internal error.
 #include "check_command.h"
 #include "eval_command.h"
+#include "hfp_command.h"
+#include "mesh_command.h"
+#include "slice_command.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <string>
+#include <vector>
 
-int main(int argc, char** argv)
+namespace
 {
-  CLI::App app{ "frepkit: function-representation (FRep) modelling in any number of dimensions. "
-                "Models are HyperFun programs (value-compatible with the original interpreter)." };
-  app.set_version_flag("--version", std::string("frepkit ") + FREPKIT_VERSION);
-  app.require_subcommand(1);
 
-  frepkit::CheckOptions check_options;
-  frepkit::EvalOptions eval_options;
-  CLI::App* check = frepkit::add_check_command(app, check_options);
-  CLI::App* eval = frepkit::add_eval_command(app, eval_options);
-
+/// Runs a command; a UserError is one message and exit code 1, anything else exit code 2.
+int guarded(const std::function<int()>& command)
+{
   try
   {
-    app.parse(argc, argv);
-  }
-  catch (const CLI::ParseError& e)
-  {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 1;
-  }
-
-  try
-  {
-    if (check->parsed())
-    {
-      return frepkit::run_check(check_options);
-    }
-    if (eval->parsed())
-    {
-      return frepkit::run_eval(eval_options);
-    }
+    return command();
   }
   catch (const frepkit::UserError& e)
   {
@@ -56,5 +39,69 @@ int main(int argc, char** argv)
     std::cerr << "frepkit: internal error: " << e.what() << '\n';
     return 2;
   }
-  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // hfp's grammar is not CLI11's (see hfp_arguments.h): everything after "hfp" goes to its own
+  // parser.
+  if (argc >= 2 && std::string(argv[1]) == "hfp")
+  {
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    return guarded([&args] { return frepkit::run_hfp(args); });
+  }
+
+  CLI::App app{ "frepkit: function-representation (FRep) modelling in any number of dimensions. "
+                "Models are HyperFun programs (value-compatible with the original interpreter)." };
+  app.set_version_flag("--version", std::string("frepkit ") + FREPKIT_VERSION);
+  app.require_subcommand(1);
+
+  frepkit::CheckOptions check_options;
+  frepkit::EvalOptions eval_options;
+  frepkit::MeshOptions mesh_options;
+  frepkit::SliceOptions slice_options;
+  CLI::App* check = frepkit::add_check_command(app, check_options);
+  CLI::App* eval = frepkit::add_eval_command(app, eval_options);
+  CLI::App* mesh = frepkit::add_mesh_command(app, mesh_options);
+  CLI::App* slice = frepkit::add_slice_command(app, slice_options);
+  // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
+  app
+    .add_subcommand("hfp",
+      "Drop-in replacement of the HyperFun polygonizer's command line: frepkit hfp FILE.hf "
+      "[-b ..] [-g ..] [-wrl|-stl|-stlb|-pov|-cli [FILE]] ... ('frepkit hfp -h' lists the options)")
+    ->allow_extras();
+
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 1;
+  }
+
+  return guarded(
+    [&]
+    {
+      if (check->parsed())
+      {
+        return frepkit::run_check(check_options);
+      }
+      if (eval->parsed())
+      {
+        return frepkit::run_eval(eval_options);
+      }
+      if (mesh->parsed())
+      {
+        return frepkit::run_mesh(mesh_options);
+      }
+      if (slice->parsed())
+      {
+        return frepkit::run_slice(slice_options);
+      }
+      return 0;
+    });
 }

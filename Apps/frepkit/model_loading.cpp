@@ -4,6 +4,7 @@
 #include "user_error.h"
 
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <sstream>
 
@@ -29,8 +30,8 @@ LoadedProgram load_program(const std::string& path)
 std::string describe_object(const frep::ast::Object& object)
 {
   std::ostringstream out;
-  out << object.name << "(x[" << object.x_dim << "], a[" << object.a_dim << "], s["
-      << object.s_dim << "])";
+  out << object.name << "(x[" << object.x_dim << "], a[" << object.a_dim << "], s[" << object.s_dim
+      << "])";
   return out.str();
 }
 
@@ -52,12 +53,43 @@ int choose_object(const LoadedProgram& loaded, const std::optional<std::string>&
         names += names.empty() ? "" : ", ";
         names += object.name;
       }
-      throw UserError(loaded.path + ": no object named '" + *requested + "' (objects: " + names +
-        ")");
+      throw UserError(
+        loaded.path + ": no object named '" + *requested + "' (objects: " + names + ")");
     }
     return found;
   }
   return frep::ast::select_object(program, "my_model");
+}
+
+void require_parsed(const LoadedProgram& loaded)
+{
+  if (loaded.program)
+  {
+    return;
+  }
+  std::cerr << frep::format_diagnostics(loaded.diagnostics);
+  throw UserError(loaded.path + ": " + std::to_string(loaded.diagnostics.size()) +
+                  (loaded.diagnostics.size() == 1 ? " error" : " errors"));
+}
+
+std::shared_ptr<const frep::Model> compile_object(const LoadedProgram& loaded, int object_index)
+{
+  frep::Model::CompileResult compiled = frep::Model::compile(loaded.program, object_index);
+  if (!compiled.model)
+  {
+    std::cerr << frep::format_diagnostics(compiled.diagnostics);
+    throw UserError(loaded.path + ": the object cannot be compiled");
+  }
+  return compiled.model;
+}
+
+void warn_extra_parameters(const frep::ast::Object& object, std::size_t given)
+{
+  if (given > static_cast<std::size_t>(object.a_dim))
+  {
+    std::cerr << "frepkit: warning: " << given << " parameters given, " << object.name << " has a["
+              << object.a_dim << "]: the extra ones are ignored\n";
+  }
 }
 
 } // namespace frepkit

@@ -1,6 +1,7 @@
 // Reading and parsing a model file and choosing its object, shared by the subcommands.
 #pragma once
 
+#include "Compiler/model.h"
 #include "Language/ast.h"
 #include "Language/diagnostic.h"
 
@@ -28,6 +29,16 @@ LoadedProgram load_program(const std::string& path);
 /// objects (the original silently fell back; a typo should not evaluate the wrong object).
 /// Throws UserError when the file defines no object.
 int choose_object(const LoadedProgram& loaded, const std::optional<std::string>& requested);
+
+/// Throws UserError after printing every parse diagnostic (file:line:col) on standard error
+/// when the program did not parse.
+void require_parsed(const LoadedProgram& loaded);
+
+/// Compiles the chosen object; a failure prints the compiler's diagnostics and throws UserError.
+std::shared_ptr<const frep::Model> compile_object(const LoadedProgram& loaded, int object_index);
+
+/// Prints a warning when more a[] values are given than the object has.
+void warn_extra_parameters(const frep::ast::Object& object, std::size_t given);
 
 /// "name(x[3], a[1], s[1])"
 std::string describe_object(const frep::ast::Object& object);

@@ -9,4 +9,7 @@ namespace frepkit
 
 std::string format_double(double value);
 
+/// The shortest text that reads back to the same double (for messages and reports).
+std::string format_short(double value);
+
 } // namespace frepkit

@@ -1,0 +1,50 @@
+#include "interrupt_guard.h"
+
+namespace frepkit
+{
+namespace
+{
+
+volatile std::sig_atomic_t g_interrupted = 0;
+int g_depth = 0; // nested guards (a CLI run around per-layer extractions) install once
+
+void on_interrupt(int)
+{
+  g_interrupted = 1;
+}
+
+} // namespace
+
+InterruptGuard::InterruptGuard()
+{
+  if (g_depth++ > 0)
+  {
+    return;
+  }
+  g_interrupted = 0;
+  struct sigaction action
+  {
+  };
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND; // the second signal has the default effect
+  sigaction(SIGINT, &action, &previous_int_);
+  sigaction(SIGTERM, &action, &previous_term_);
+}
+
+InterruptGuard::~InterruptGuard()
+{
+  if (--g_depth > 0)
+  {
+    return;
+  }
+  sigaction(SIGINT, &previous_int_, nullptr);
+  sigaction(SIGTERM, &previous_term_, nullptr);
+}
+
+bool InterruptGuard::interrupted()
+{
+  return g_interrupted != 0;
+}
+
+} // namespace frepkit

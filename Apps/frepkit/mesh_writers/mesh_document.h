@@ -1,0 +1,34 @@
+// What a mesh writer writes: the extracted surface plus what the formats around it need (a name,
+// the box for a viewpoint, colours per point). Writers only read it.
+#pragma once
+
+#include "Mesh/surface.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace frepkit
+{
+
+/// An RGB colour, components in [0, 1].
+using Rgb = std::array<float, 3>;
+
+struct MeshDocument
+{
+  const frep::mesh::Surface* surface = nullptr;
+  /// One colour per point (see vertex_colours.h), or empty: the formats then carry none.
+  std::vector<Rgb> colours;
+  std::string name = "frep"; ///< object name: VRML DEF, STL solid name, PLY/OBJ comment
+  std::string source;        ///< the model file, for comments
+  std::array<double, 3> box_lo{ -10, -10, -10 }; ///< the sampled box (viewpoint, lights)
+  std::array<double, 3> box_hi{ 10, 10, 10 };
+  /// Colour of uncoloured faces (VRML diffuseColor, POV texture): hfp's default 50,200,80.
+  Rgb face_colour{ 50.0f / 255.0f, 200.0f / 255.0f, 80.0f / 255.0f };
+  bool normals = true; ///< write the per-point normals when the surface has them
+
+  bool has_normals() const { return normals && !surface->normals.empty(); }
+  bool has_colours() const { return !colours.empty(); }
+};
+
+} // namespace frepkit

@@ -1,0 +1,104 @@
+#include "sampling_grid.h"
+
+#include "number_format.h"
+#include "user_error.h"
+
+#include <cmath>
+
+namespace frepkit
+{
+
+frep::mesh::Grid make_grid(const std::vector<double>& box,
+  const std::vector<std::int64_t>& grid,
+  int axes)
+{
+  static const char* const kMinNames[] = { "xmin", "ymin", "zmin" };
+  static const char* const kMaxNames[] = { "xmax", "ymax", "zmax" };
+  frep::mesh::Grid result;
+  for (int k = 0; k < 3; ++k)
+  {
+    result.lo[static_cast<std::size_t>(k)] = -kDefaultBoxHalfSize;
+    result.hi[static_cast<std::size_t>(k)] = kDefaultBoxHalfSize;
+    result.samples[static_cast<std::size_t>(k)] = kDefaultSamples;
+  }
+  const std::size_t n = static_cast<std::size_t>(axes);
+  if (!box.empty())
+  {
+    if (box.size() != 2 * n)
+    {
+      std::string names;
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        for (int k = 0; k < axes; ++k)
+        {
+          names += names.empty() ? "" : ",";
+          names += pass == 0 ? kMinNames[k] : kMaxNames[k];
+        }
+      }
+      throw UserError("--box needs " + std::to_string(2 * n) + " numbers " + names + " (got " +
+                      std::to_string(box.size()) + ")");
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const double lo = box[k];
+      const double hi = box[k + n];
+      if (!std::isfinite(lo) || !std::isfinite(hi))
+      {
+        throw UserError("--box: the bounds must be finite numbers");
+      }
+      if (!(lo < hi))
+      {
+        throw UserError(std::string("--box: ") + kMinNames[k] + " = " + format_short(lo) +
+                        " is not less than " + kMaxNames[k] + " = " + format_short(hi));
+      }
+      result.lo[k] = lo;
+      result.hi[k] = hi;
+    }
+  }
+  if (!grid.empty())
+  {
+    if (grid.size() != 1 && grid.size() != n)
+    {
+      throw UserError("--grid needs 1 or " + std::to_string(n) +
+                      " values (samples per axis), got " + std::to_string(grid.size()));
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const std::int64_t samples = grid.size() == 1 ? grid[0] : grid[k];
+      if (samples < 2)
+      {
+        throw UserError(
+          "--grid " + std::to_string(samples) +
+          ": at least 2 samples per axis are needed (the grid counts samples, not cells)");
+      }
+      result.samples[k] = samples;
+    }
+  }
+  return result;
+}
+
+double grid_sample_count(const frep::mesh::Grid& grid, int axes)
+{
+  double count = 1;
+  for (int k = 0; k < axes; ++k)
+  {
+    count *= static_cast<double>(grid.samples[static_cast<std::size_t>(k)]);
+  }
+  return count;
+}
+
+std::string describe_grid(const frep::mesh::Grid& grid, int axes)
+{
+  std::string samples;
+  std::string box;
+  for (int k = 0; k < axes; ++k)
+  {
+    const std::size_t i = static_cast<std::size_t>(k);
+    samples += (k == 0 ? "" : " x ") + std::to_string(grid.samples[i]);
+    box += std::string(k == 0 ? "" : " x ") + "[" + format_short(grid.lo[i]) + ", " +
+           format_short(grid.hi[i]) + "]";
+  }
+  return samples + " samples over " + box;
+}
+
+} // namespace frepkit

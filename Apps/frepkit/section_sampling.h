@@ -1,0 +1,27 @@
+// Samples a tape on a regular grid with the batch evaluator (SIMD, all cores): F and, when asked,
+// s[1..m]. Coordinates are generated one slab (one z) at a time. Grids larger than
+// kMaxSectionSamples are refused before anything is allocated.
+#pragma once
+
+#include "Compiler/tape.h"
+#include "Mesh/surface.h"
+#include "section_writers/section_image.h"
+
+#include <memory>
+
+namespace frepkit
+{
+
+/// 2^27 samples: 1 GiB of F values (plus s[] arrays). Images and volumes beyond are refused.
+constexpr double kMaxSectionSamples = 134217728.0;
+
+/// Samples `tape` (axes inputs) over the first `axes` axes of `grid`. Throws UserError when the
+/// grid has too many samples; Ctrl-C cancels (UserError).
+SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
+  const frep::mesh::Grid& grid,
+  int axes,
+  bool attributes,
+  int threads,
+  bool show_progress);
+
+} // namespace frepkit

@@ -287,6 +287,7 @@ bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
   std::atomic<bool> cancelled{ false };
   std::atomic<std::size_t> done{ 0 };
   std::mutex progress_mutex;
+  std::size_t reported = 0; // under progress_mutex
   // About 200 progress calls at most, so the callback never costs anything.
   const std::size_t report_every = std::max<std::size_t>(1, blocks.size() / 200);
   pool.parallel_for(blocks.size(),
@@ -301,9 +302,14 @@ bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
       if (progress && (finished % report_every == 0 || finished == blocks.size()))
       {
         std::lock_guard lock(progress_mutex);
-        if (!progress(double(finished) / double(blocks.size())))
+        // Threads can reach the lock out of order: report only forward steps.
+        if (finished > reported)
         {
-          cancelled = true;
+          reported = finished;
+          if (!progress(double(finished) / double(blocks.size())))
+          {
+            cancelled = true;
+          }
         }
       }
     });

@@ -14,6 +14,8 @@ packages=(
   libutfcpp-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libopenmpi-dev
   liblz4-dev libdouble-conversion-dev libtheora-dev libglew-dev libtiff-dev libfreetype-dev
   libpng-dev libjpeg-dev libx11-dev libgl-dev libexpat1-dev zlib1g-dev liblzma-dev
+  # the headless renderer's labels (Mapping/Render: DejaVu Sans)
+  fonts-dejavu-core
   # toolchain, engine, command line, tests and benchmarks
   build-essential cmake pkg-config git
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev

@@ -1,0 +1,43 @@
+// frepkit map MODEL.hf MAPPING.json -O OUTDIR: a multimedia mapping end to end — the spreadsheet
+// of cross-sections (spreadsheet.png), the path of the dynamic coordinates (path.png), the
+// animation frames (frames/frame_NNNNN.png), the sound track (NAME.wav), the movie with the
+// sound muxed in (NAME.mp4), the shape alone when nothing varies (shape.png) and manifest.json
+// listing everything with each frame's values. Resumable: frames already written by an interrupted
+// run with the same model and mapping are kept; every file is written under a temporary name and
+// renamed when complete.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI
+{
+class App;
+}
+
+namespace frepkit
+{
+
+struct MapOptions
+{
+  std::string model;
+  std::string mapping;
+  std::string output_directory;
+  std::optional<std::string> object;
+  std::vector<double> parameters;
+  std::optional<int> resolution; ///< overrides world.resolution
+  std::optional<int> frames;     ///< overrides the frame count (duration * fps)
+  std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape
+  std::string name;              ///< output stem; default: the mapping file's stem
+  bool force = false;            ///< re-render frames that exist
+  int threads = 0;
+  bool quiet = false;
+};
+
+CLI::App* add_map_command(CLI::App& app, MapOptions& options);
+
+/// Returns the process exit code; user errors are thrown as UserError.
+int run_map(const MapOptions& options);
+
+} // namespace frepkit

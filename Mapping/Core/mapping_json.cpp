@@ -1,0 +1,1235 @@
+#include "mapping_json.h"
+
+#include "colour_maps.h"
+#include "path.h"
+#include "unit_map.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <optional>
+#include <set>
+#include <string_view>
+#include <utility>
+
+namespace frep::mapping
+{
+namespace
+{
+
+// Ordered: coordinates keep the file's order (a std::map would put "x10" before "x2").
+using Json = nlohmann::ordered_json;
+
+// Limits that keep a typo from asking for absurd amounts of memory later.
+constexpr int max_resolution = 8192;
+constexpr int max_picture_size = 16384;
+constexpr int max_voice = 63;
+constexpr std::size_t max_node_values = 10000;
+
+template<typename E>
+struct Name
+{
+  std::string_view name;
+  E value;
+};
+
+constexpr Name<Channel::Type> channel_types[] = {
+  { "world", Channel::Type::World },
+  { "dynamic", Channel::Type::Dynamic },
+  { "spreadsheet", Channel::Type::Spreadsheet },
+  { "fixed", Channel::Type::Fixed },
+  { "colour", Channel::Type::Colour },
+  { "transparency", Channel::Type::Transparency },
+  { "transformation", Channel::Type::Transformation },
+  { "audio", Channel::Type::Audio },
+};
+constexpr Name<WorldSystem> world_systems[] = {
+  { "cartesian", WorldSystem::Cartesian },
+  { "cylindrical", WorldSystem::Cylindrical },
+  { "spherical", WorldSystem::Spherical },
+};
+constexpr Name<int> cartesian_axes[] = { { "x", 0 }, { "y", 1 }, { "z", 2 } };
+constexpr Name<int> cylindrical_axes[] = { { "r", 0 }, { "phi", 1 }, { "z", 2 } };
+constexpr Name<int> spherical_axes[] = { { "r", 0 }, { "theta", 1 }, { "phi", 2 } };
+// The first three are the names save_mapping writes.
+constexpr Name<int> grid_axes[] = {
+  { "columns", 0 },
+  { "rows", 1 },
+  { "layers", 2 },
+  { "u", 0 },
+  { "v", 1 },
+  { "w", 2 },
+};
+constexpr Name<PhotometricTarget> photometric_targets[] = {
+  { "shape", PhotometricTarget::Shape },
+  { "background", PhotometricTarget::Background },
+  { "light", PhotometricTarget::Light },
+};
+constexpr Name<Channel::Transform> transforms[] = {
+  { "rotate", Channel::Transform::Rotate },
+  { "scale", Channel::Transform::Scale },
+  { "translate", Channel::Transform::Translate },
+};
+constexpr Name<Channel::AudioParameter> audio_parameters[] = {
+  { "pitch", Channel::AudioParameter::Pitch },
+  { "loudness", Channel::AudioParameter::Loudness },
+  { "timbre", Channel::AudioParameter::Timbre },
+};
+constexpr Name<Path::Interpolation> interpolations[] = {
+  { "polyline", Path::Interpolation::Polyline },
+  { "catmull-rom", Path::Interpolation::CatmullRom },
+};
+constexpr Name<Path::Timing> timings[] = {
+  { "arc-length", Path::Timing::ArcLength },
+  { "keys", Path::Timing::Keys },
+};
+constexpr Name<RenderSettings::ColourSource> colour_sources[] = {
+  { "uniform", RenderSettings::ColourSource::Uniform },
+  { "attributes", RenderSettings::ColourSource::Attributes },
+};
+
+template<typename E, std::size_t N>
+std::string name_of(const Name<E> (&names)[N], E value)
+{
+  for (const auto& n : names)
+  {
+    if (n.value == value)
+    {
+      return std::string(n.name);
+    }
+  }
+  return std::string(names[0].name);
+}
+
+template<typename E, std::size_t N>
+std::string name_list(const Name<E> (&names)[N])
+{
+  std::string list;
+  for (const auto& n : names)
+  {
+    list += (list.empty() ? "" : ", ") + std::string(n.name);
+  }
+  return list;
+}
+
+std::string join(const std::string& place, std::string_view key)
+{
+  return place.empty() ? std::string(key) : place + "." + std::string(key);
+}
+
+std::string at(const std::string& place, std::size_t index)
+{
+  return place + "[" + std::to_string(index) + "]";
+}
+
+// Collects errors while walking the document; each reader returns nullopt after reporting.
+class Reader
+{
+public:
+  std::vector<PlanError> errors;
+
+  void error(std::string place, std::string message)
+  {
+    errors.push_back({ std::move(place), std::move(message) });
+  }
+
+  /// j must be an object whose keys are all in `allowed`.
+  bool object(const Json& j,
+    const std::string& place,
+    std::initializer_list<std::string_view> allowed)
+  {
+    if (!j.is_object())
+    {
+      error(place, std::string("expected an object, found ") + j.type_name());
+      return false;
+    }
+    for (const auto& item : j.items())
+    {
+      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+      {
+        std::string list;
+        for (std::string_view a : allowed)
+        {
+          list += (list.empty() ? "" : ", ") + std::string(a);
+        }
+        error(
+          join(place, item.key()), "unknown key \"" + item.key() + "\" (expected " + list + ")");
+      }
+    }
+    return true;
+  }
+
+  std::optional<double> number(const Json& j, const std::string& place)
+  {
+    if (!j.is_number())
+    {
+      error(place, std::string("expected a number, found ") + j.type_name());
+      return std::nullopt;
+    }
+    const double v = j.get<double>();
+    if (!std::isfinite(v))
+    {
+      error(place, "expected a finite number");
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  std::optional<int> integer(const Json& j, const std::string& place, int lo, int hi)
+  {
+    const std::optional<double> v = number(j, place);
+    if (!v)
+    {
+      return std::nullopt;
+    }
+    if (*v != std::floor(*v))
+    {
+      error(place, "expected a whole number");
+      return std::nullopt;
+    }
+    if (*v < lo || *v > hi)
+    {
+      error(place, "must be from " + std::to_string(lo) + " to " + std::to_string(hi));
+      return std::nullopt;
+    }
+    return static_cast<int>(*v);
+  }
+
+  std::optional<bool> boolean(const Json& j, const std::string& place)
+  {
+    if (!j.is_boolean())
+    {
+      error(place, std::string("expected true or false, found ") + j.type_name());
+      return std::nullopt;
+    }
+    return j.get<bool>();
+  }
+
+  std::optional<std::string> string(const Json& j, const std::string& place)
+  {
+    if (!j.is_string())
+    {
+      error(place, std::string("expected a string, found ") + j.type_name());
+      return std::nullopt;
+    }
+    return j.get<std::string>();
+  }
+
+  template<typename E, std::size_t N>
+  std::optional<E> choice(const Json& j,
+    const std::string& place,
+    std::string_view what,
+    const Name<E> (&names)[N])
+  {
+    const std::optional<std::string> s = string(j, place);
+    if (!s)
+    {
+      return std::nullopt;
+    }
+    for (const auto& n : names)
+    {
+      if (n.name == *s)
+      {
+        return n.value;
+      }
+    }
+    error(place,
+      "unknown " + std::string(what) + " \"" + *s + "\" (expected " + name_list(names) + ")");
+    return std::nullopt;
+  }
+
+  std::optional<std::vector<double>> numbers(const Json& j, const std::string& place)
+  {
+    if (!j.is_array())
+    {
+      error(place, std::string("expected an array of numbers, found ") + j.type_name());
+      return std::nullopt;
+    }
+    std::vector<double> values;
+    bool ok = true;
+    for (std::size_t k = 0; k < j.size(); ++k)
+    {
+      const std::optional<double> v = number(j[k], at(place, k));
+      ok = ok && v.has_value();
+      values.push_back(v.value_or(0.0));
+    }
+    return ok ? std::optional(values) : std::nullopt;
+  }
+
+  template<std::size_t N>
+  std::optional<std::array<double, N>> fixed_numbers(const Json& j, const std::string& place)
+  {
+    const std::optional<std::vector<double>> v = numbers(j, place);
+    if (!v)
+    {
+      return std::nullopt;
+    }
+    if (v->size() != N)
+    {
+      error(
+        place, "expected " + std::to_string(N) + " numbers, found " + std::to_string(v->size()));
+      return std::nullopt;
+    }
+    std::array<double, N> a{};
+    std::copy(v->begin(), v->end(), a.begin());
+    return a;
+  }
+
+  /// [lo, hi]; a range must have lo < hi, a target may run either way.
+  std::optional<Interval> interval(const Json& j, const std::string& place, bool increasing)
+  {
+    const auto v = fixed_numbers<2>(j, place);
+    if (!v)
+    {
+      return std::nullopt;
+    }
+    if (increasing && !((*v)[0] < (*v)[1]))
+    {
+      error(place, "lo must be < hi");
+      return std::nullopt;
+    }
+    return Interval{ (*v)[0], (*v)[1] };
+  }
+
+  std::optional<std::array<double, 3>> rgb(const Json& j, const std::string& place)
+  {
+    const auto v = fixed_numbers<3>(j, place);
+    if (v && std::any_of(v->begin(), v->end(), [](double c) { return c < 0 || c > 1; }))
+    {
+      error(place, "colour components must be in [0, 1]");
+      return std::nullopt;
+    }
+    return v;
+  }
+};
+
+// Reads j[key] with `read` into `out` when the key is present.
+template<typename T, typename F>
+void optional_key(const Json& j, std::string_view key, const std::string& place, T& out, F read)
+{
+  const auto it = j.find(std::string(key));
+  if (it != j.end())
+  {
+    if (auto v = read(*it, join(place, key)))
+    {
+      out = *v;
+    }
+  }
+}
+
+std::optional<Curve> read_curve(Reader& r, const Json& j, const std::string& place)
+{
+  Curve curve;
+  if (j.is_string())
+  {
+    const std::string s = j.get<std::string>();
+    if (s == "linear")
+    {
+      return curve;
+    }
+    if (s == "ease-in-out")
+    {
+      curve.kind = Curve::Kind::EaseInOut;
+      return curve;
+    }
+    r.error(place,
+      "unknown curve \"" + s +
+        "\" (expected linear, ease-in-out, or an object with kind power, table or expression)");
+    return std::nullopt;
+  }
+  if (!j.is_object())
+  {
+    r.error(place, std::string("expected a curve name or object, found ") + j.type_name());
+    return std::nullopt;
+  }
+  const auto kind = j.find("kind");
+  if (kind == j.end())
+  {
+    r.error(
+      join(place, "kind"), "missing (expected linear, ease-in-out, power, table, expression)");
+    return std::nullopt;
+  }
+  const std::optional<std::string> k = r.string(*kind, join(place, "kind"));
+  if (!k)
+  {
+    return std::nullopt;
+  }
+  std::string detail_key; // where a curve error belongs
+  if (*k == "linear" || *k == "ease-in-out")
+  {
+    r.object(j, place, { "kind" });
+    curve.kind = *k == "linear" ? Curve::Kind::Linear : Curve::Kind::EaseInOut;
+    return curve;
+  }
+  else if (*k == "power")
+  {
+    r.object(j, place, { "kind", "exponent" });
+    curve.kind = Curve::Kind::Power;
+    detail_key = "exponent";
+    const auto e = j.find("exponent");
+    if (e == j.end())
+    {
+      r.error(join(place, "exponent"), "missing");
+      return std::nullopt;
+    }
+    const std::optional<double> v = r.number(*e, join(place, "exponent"));
+    if (!v)
+    {
+      return std::nullopt;
+    }
+    curve.exponent = *v;
+  }
+  else if (*k == "table")
+  {
+    r.object(j, place, { "kind", "points" });
+    curve.kind = Curve::Kind::Table;
+    detail_key = "points";
+    const auto p = j.find("points");
+    const std::string pp = join(place, "points");
+    if (p == j.end() || !p->is_array())
+    {
+      r.error(pp, p == j.end() ? "missing" : "expected an array of [u, v] pairs");
+      return std::nullopt;
+    }
+    bool ok = true;
+    for (std::size_t i = 0; i < p->size(); ++i)
+    {
+      const auto point = r.fixed_numbers<2>((*p)[i], at(pp, i));
+      ok = ok && point.has_value();
+      curve.table.push_back(point.value_or(std::array<double, 2>{}));
+    }
+    if (!ok)
+    {
+      return std::nullopt;
+    }
+  }
+  else if (*k == "expression")
+  {
+    r.object(j, place, { "kind", "expression" });
+    curve.kind = Curve::Kind::Expression;
+    detail_key = "expression";
+    const auto e = j.find("expression");
+    if (e == j.end())
+    {
+      r.error(join(place, "expression"), "missing");
+      return std::nullopt;
+    }
+    const std::optional<std::string> s = r.string(*e, join(place, "expression"));
+    if (!s)
+    {
+      return std::nullopt;
+    }
+    curve.expression = *s;
+  }
+  else
+  {
+    r.error(join(place, "kind"),
+      "unknown curve kind \"" + *k + "\" (expected linear, ease-in-out, power, table, expression)");
+    return std::nullopt;
+  }
+  // The curve itself: exponent > 0, a table from u = 0 to 1, an expression that compiles.
+  const UnitCurve::Result checked = UnitCurve::make(curve);
+  if (!checked.ok())
+  {
+    r.error(join(place, detail_key), checked.error);
+    return std::nullopt;
+  }
+  return curve;
+}
+
+// Node values from "step" over the range, lo to hi inclusive. The last value is hi exactly
+// when (hi - lo) / step is a whole number up to 1e-9 (0.1 steps would otherwise drift past it).
+std::optional<std::vector<double>> step_values(Reader& r,
+  Interval range,
+  double step,
+  const std::string& place)
+{
+  if (!(step > 0))
+  {
+    r.error(place, "must be > 0");
+    return std::nullopt;
+  }
+  const double count = (range.hi - range.lo) / step;
+  if (!(count < static_cast<double>(max_node_values)))
+  {
+    r.error(place, "more than " + std::to_string(max_node_values) + " node values");
+    return std::nullopt;
+  }
+  const double whole = std::round(count);
+  const bool exact = std::abs(count - whole) <= 1e-9 * std::max(1.0, whole);
+  const auto n = static_cast<std::size_t>(exact ? whole : std::floor(count));
+  std::vector<double> values;
+  for (std::size_t k = 0; k <= n; ++k)
+  {
+    values.push_back(range.lo + static_cast<double>(k) * step);
+  }
+  if (exact)
+  {
+    values.back() = range.hi;
+  }
+  return values;
+}
+
+std::optional<Channel> read_channel(Reader& r,
+  const Json& j,
+  const std::string& place,
+  WorldSystem system)
+{
+  if (!j.is_object())
+  {
+    r.error(place, std::string("expected a channel object, found ") + j.type_name());
+    return std::nullopt;
+  }
+  const auto type = j.find("type");
+  if (type == j.end())
+  {
+    r.error(join(place, "type"), "missing (expected " + name_list(channel_types) + ")");
+    return std::nullopt;
+  }
+  Channel c;
+  const std::optional<Channel::Type> t =
+    r.choice(*type, join(place, "type"), "type", channel_types);
+  if (!t)
+  {
+    return std::nullopt;
+  }
+  c.type = *t;
+  const std::size_t errors_before = r.errors.size();
+  switch (c.type)
+  {
+    case Channel::Type::World:
+      r.object(j, place, { "type", "range", "curve", "target", "axis" });
+      break;
+    case Channel::Type::Dynamic:
+      r.object(j, place, { "type", "range", "curve", "target" });
+      break;
+    case Channel::Type::Spreadsheet:
+      r.object(j, place, { "type", "range", "curve", "target", "axis", "step", "values" });
+      break;
+    case Channel::Type::Fixed:
+      r.object(j, place, { "type", "range", "curve", "target", "value" });
+      break;
+    case Channel::Type::Colour:
+      r.object(j, place, { "type", "range", "curve", "target", "colormap", "applies_to" });
+      break;
+    case Channel::Type::Transparency:
+      r.object(j, place, { "type", "range", "curve", "target", "applies_to" });
+      break;
+    case Channel::Type::Transformation:
+      r.object(j, place, { "type", "range", "curve", "target", "transform", "vector" });
+      break;
+    case Channel::Type::Audio:
+      r.object(j, place, { "type", "range", "curve", "target", "parameter", "voice" });
+      break;
+  }
+
+  optional_key(j,
+    "range",
+    place,
+    c.range,
+    [&](const Json& v, const std::string& p) { return r.interval(v, p, true); });
+  optional_key(j,
+    "target",
+    place,
+    c.target,
+    [&](const Json& v, const std::string& p) { return r.interval(v, p, false); });
+  optional_key(j,
+    "curve",
+    place,
+    c.curve,
+    [&](const Json& v, const std::string& p) { return read_curve(r, v, p); });
+
+  auto required = [&](std::string_view key, std::string_view expected) -> const Json*
+  {
+    const auto it = j.find(std::string(key));
+    if (it == j.end())
+    {
+      r.error(join(place, key),
+        "missing" +
+          (expected.empty() ? std::string() : " (expected " + std::string(expected) + ")"));
+      return nullptr;
+    }
+    return &*it;
+  };
+
+  switch (c.type)
+  {
+    case Channel::Type::World:
+    {
+      const auto& axes = system == WorldSystem::Cartesian     ? cartesian_axes
+                         : system == WorldSystem::Cylindrical ? cylindrical_axes
+                                                              : spherical_axes;
+      const std::string what = name_of(world_systems, system) + " axis";
+      if (const Json* a = required("axis", name_list(axes)))
+      {
+        if (auto v = r.choice(*a, join(place, "axis"), what, axes))
+        {
+          c.axis = *v;
+        }
+      }
+      break;
+    }
+    case Channel::Type::Spreadsheet:
+    {
+      if (const Json* a = required("axis", "columns, rows, layers"))
+      {
+        if (auto v = r.choice(*a, join(place, "axis"), "spreadsheet axis", grid_axes))
+        {
+          c.grid_axis = *v;
+        }
+      }
+      const bool has_step = j.contains("step");
+      const bool has_values = j.contains("values");
+      if (has_step == has_values)
+      {
+        r.error(place,
+          has_step ? "give either \"step\" or \"values\", not both"
+                   : "the node values are missing: give \"step\" (with a range) or \"values\"");
+      }
+      else if (has_values)
+      {
+        if (auto v = r.numbers(j["values"], join(place, "values")))
+        {
+          if (v->empty())
+          {
+            r.error(join(place, "values"), "at least one value is needed");
+          }
+          else if (v->size() > max_node_values)
+          {
+            r.error(
+              join(place, "values"), "more than " + std::to_string(max_node_values) + " values");
+          }
+          c.values = *v;
+        }
+      }
+      else if (auto step = r.number(j["step"], join(place, "step")))
+      {
+        if (!j.contains("range"))
+        {
+          r.error(join(place, "step"), "needs a \"range\" to step over");
+        }
+        else if (c.range)
+        {
+          if (auto v = step_values(r, *c.range, *step, join(place, "step")))
+          {
+            c.values = *v;
+          }
+        }
+      }
+      break;
+    }
+    case Channel::Type::Fixed:
+      if (const Json* v = required("value", ""))
+      {
+        if (auto x = r.number(*v, join(place, "value")))
+        {
+          c.value = *x;
+        }
+      }
+      break;
+    case Channel::Type::Colour:
+      optional_key(j,
+        "colormap",
+        place,
+        c.colormap,
+        [&](const Json& v, const std::string& p) -> std::optional<std::string>
+        {
+          auto s = r.string(v, p);
+          if (s && !is_colour_channel_name(*s))
+          {
+            r.error(
+              p, "unknown colour map \"" + *s + "\" (expected " + colour_channel_names() + ")");
+            return std::nullopt;
+          }
+          return s;
+        });
+      [[fallthrough]];
+    case Channel::Type::Transparency:
+      optional_key(j,
+        "applies_to",
+        place,
+        c.applies_to,
+        [&](const Json& v, const std::string& p)
+        { return r.choice(v, p, "target of the channel", photometric_targets); });
+      break;
+    case Channel::Type::Transformation:
+      optional_key(j,
+        "transform",
+        place,
+        c.transform,
+        [&](const Json& v, const std::string& p)
+        { return r.choice(v, p, "transform", transforms); });
+      optional_key(j,
+        "vector",
+        place,
+        c.vector,
+        [&](const Json& v, const std::string& p) -> std::optional<std::array<double, 3>>
+        {
+          auto a = r.fixed_numbers<3>(v, p);
+          if (a && (*a)[0] == 0 && (*a)[1] == 0 && (*a)[2] == 0)
+          {
+            r.error(p, "the vector must not be zero");
+            return std::nullopt;
+          }
+          return a;
+        });
+      break;
+    case Channel::Type::Audio:
+      optional_key(j,
+        "parameter",
+        place,
+        c.audio_parameter,
+        [&](const Json& v, const std::string& p)
+        { return r.choice(v, p, "audio parameter", audio_parameters); });
+      optional_key(j,
+        "voice",
+        place,
+        c.voice,
+        [&](const Json& v, const std::string& p) { return r.integer(v, p, 0, max_voice); });
+      break;
+    case Channel::Type::Dynamic:
+      break;
+  }
+  if (r.errors.size() != errors_before)
+  {
+    return std::nullopt;
+  }
+  return c;
+}
+
+void read_path(Reader& r, const Json& j, const std::string& place, Path& path)
+{
+  if (!r.object(
+        j, place, { "coordinates", "points", "interpolation", "closed", "timing", "key_times" }))
+  {
+    return;
+  }
+  const std::size_t errors_before = r.errors.size();
+  const auto coords = j.find("coordinates");
+  if (coords == j.end())
+  {
+    r.error(join(place, "coordinates"), "missing (the dynamic coordinates the path runs through)");
+  }
+  else if (!coords->is_array())
+  {
+    r.error(join(place, "coordinates"),
+      std::string("expected an array of names, found ") + coords->type_name());
+  }
+  else
+  {
+    for (std::size_t k = 0; k < coords->size(); ++k)
+    {
+      if (auto s = r.string((*coords)[k], at(join(place, "coordinates"), k)))
+      {
+        path.coordinates.push_back(*s);
+      }
+    }
+  }
+  const auto points = j.find("points");
+  const std::string pp = join(place, "points");
+  if (points == j.end())
+  {
+    r.error(pp, "missing");
+  }
+  else if (!points->is_array())
+  {
+    r.error(pp, std::string("expected an array of points, found ") + points->type_name());
+  }
+  else
+  {
+    for (std::size_t k = 0; k < points->size(); ++k)
+    {
+      if (auto p = r.numbers((*points)[k], at(pp, k)))
+      {
+        path.points.push_back(*p);
+      }
+    }
+  }
+  optional_key(j,
+    "interpolation",
+    place,
+    path.interpolation,
+    [&](const Json& v, const std::string& p)
+    { return r.choice(v, p, "interpolation", interpolations); });
+  optional_key(j,
+    "closed",
+    place,
+    path.closed,
+    [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+  optional_key(j,
+    "timing",
+    place,
+    path.timing,
+    [&](const Json& v, const std::string& p) { return r.choice(v, p, "timing", timings); });
+  optional_key(j,
+    "key_times",
+    place,
+    path.key_times,
+    [&](const Json& v, const std::string& p) { return r.numbers(v, p); });
+  if (r.errors.size() != errors_before)
+  {
+    return;
+  }
+  // The path's own rules (2+ points of the right size, key times), with their places here.
+  const SampledPath::Result sampled = SampledPath::make(path, 1);
+  for (const PlanError& e : sampled.errors)
+  {
+    r.error(e.place.empty() ? place : join(place, e.place), e.message);
+  }
+}
+
+// "line:column" of the character at 1-based byte position `byte` (nlohmann's count).
+std::string line_column(const std::string& text, std::size_t byte)
+{
+  const std::size_t index = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  const std::size_t line =
+    1 + static_cast<std::size_t>(
+          std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(index), '\n'));
+  const std::size_t newline = index == 0 ? std::string::npos : text.rfind('\n', index - 1);
+  const std::size_t column = newline == std::string::npos ? index + 1 : index - newline;
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at ...: " head.
+std::string syntax_message(const std::string& what)
+{
+  const std::size_t head = what.find("parse error");
+  if (head == std::string::npos)
+  {
+    return what;
+  }
+  const std::size_t colon = what.find(": ", head);
+  return colon == std::string::npos ? what.substr(head) : what.substr(colon + 2);
+}
+
+Json curve_json(const Curve& c)
+{
+  switch (c.kind)
+  {
+    case Curve::Kind::Linear:
+      return "linear";
+    case Curve::Kind::EaseInOut:
+      return "ease-in-out";
+    case Curve::Kind::Power:
+      return Json{ { "kind", "power" }, { "exponent", c.exponent } };
+    case Curve::Kind::Table:
+    {
+      Json points = Json::array();
+      for (const auto& p : c.table)
+      {
+        points.push_back(Json::array({ p[0], p[1] }));
+      }
+      return Json{ { "kind", "table" }, { "points", points } };
+    }
+    case Curve::Kind::Expression:
+      return Json{ { "kind", "expression" }, { "expression", c.expression } };
+  }
+  return "linear";
+}
+
+Json interval_json(Interval i)
+{
+  return Json::array({ i.lo, i.hi });
+}
+
+Json channel_json(const Channel& c, WorldSystem system)
+{
+  Json j;
+  j["type"] = name_of(channel_types, c.type);
+  switch (c.type)
+  {
+    case Channel::Type::World:
+      j["axis"] = system == WorldSystem::Cartesian     ? name_of(cartesian_axes, c.axis)
+                  : system == WorldSystem::Cylindrical ? name_of(cylindrical_axes, c.axis)
+                                                       : name_of(spherical_axes, c.axis);
+      break;
+    case Channel::Type::Spreadsheet:
+      j["axis"] = name_of(grid_axes, c.grid_axis);
+      break;
+    default:
+      break;
+  }
+  if (c.range)
+  {
+    j["range"] = interval_json(*c.range);
+  }
+  switch (c.type)
+  {
+    case Channel::Type::Spreadsheet:
+      j["values"] = c.values;
+      break;
+    case Channel::Type::Fixed:
+      j["value"] = c.value;
+      break;
+    case Channel::Type::Colour:
+      j["colormap"] = c.colormap;
+      j["applies_to"] = name_of(photometric_targets, c.applies_to);
+      break;
+    case Channel::Type::Transparency:
+      j["applies_to"] = name_of(photometric_targets, c.applies_to);
+      break;
+    case Channel::Type::Transformation:
+      j["transform"] = name_of(transforms, c.transform);
+      j["vector"] = c.vector;
+      break;
+    case Channel::Type::Audio:
+      j["parameter"] = name_of(audio_parameters, c.audio_parameter);
+      j["voice"] = c.voice;
+      break;
+    default:
+      break;
+  }
+  if (c.target)
+  {
+    j["target"] = interval_json(*c.target);
+  }
+  if (c.curve != Curve{})
+  {
+    j["curve"] = curve_json(c.curve);
+  }
+  return j;
+}
+
+bool is_flat(const Json& j)
+{
+  return std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_primitive(); });
+}
+
+// Like dump(2), but arrays of numbers (and arrays of those: path points, tables) stay on one
+// line, so that a saved file reads like a hand-written one.
+void write(const Json& j, int indent, std::string& out)
+{
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (j.is_object() && !j.empty())
+  {
+    out += "{\n";
+    std::size_t k = 0;
+    for (const auto& item : j.items())
+    {
+      out += pad + Json(item.key()).dump() + ": ";
+      write(item.value(), indent + 2, out);
+      out += ++k < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  }
+  else if (j.is_array() && !j.empty() &&
+           !std::all_of(j.begin(),
+             j.end(),
+             [](const Json& e) { return e.is_primitive() || (e.is_array() && is_flat(e)); }))
+  {
+    out += "[\n";
+    for (std::size_t k = 0; k < j.size(); ++k)
+    {
+      out += pad;
+      write(j[k], indent + 2, out);
+      out += k + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  }
+  else if (j.is_array())
+  {
+    out += "[";
+    for (std::size_t k = 0; k < j.size(); ++k)
+    {
+      out += (k ? ", " : "");
+      write(j[k], indent, out);
+    }
+    out += "]";
+  }
+  else
+  {
+    out += j.dump();
+  }
+}
+
+} // namespace
+
+LoadResult load_mapping(const std::string& json_text)
+{
+  LoadResult result;
+  Reader r;
+  Json doc;
+  // Duplicate keys would silently keep only the last value: report them (by name; the
+  // parser's callback does not know the path).
+  std::vector<std::set<std::string>> keys;
+  const Json::parser_callback_t duplicates = [&](int, Json::parse_event_t event, Json& parsed)
+  {
+    if (event == Json::parse_event_t::object_start)
+    {
+      keys.emplace_back();
+    }
+    else if (event == Json::parse_event_t::object_end && !keys.empty())
+    {
+      keys.pop_back();
+    }
+    else if (event == Json::parse_event_t::key && !keys.empty() &&
+             !keys.back().insert(parsed.get<std::string>()).second)
+    {
+      r.error("", "duplicate key \"" + parsed.get<std::string>() + "\"");
+    }
+    return true;
+  };
+  try
+  {
+    doc = Json::parse(json_text, duplicates);
+  }
+  catch (const Json::parse_error& e)
+  {
+    result.errors.push_back({ line_column(json_text, e.byte), syntax_message(e.what()) });
+    return result;
+  }
+  Spec& spec = result.spec;
+  if (!r.object(doc,
+        "",
+        { "version",
+          "object",
+          "parameters",
+          "world",
+          "coordinates",
+          "animation",
+          "spreadsheet",
+          "render",
+          "audio" }))
+  {
+    result.errors = std::move(r.errors);
+    return result;
+  }
+  optional_key(doc,
+    "version",
+    "",
+    spec.version,
+    [&](const Json& v, const std::string& p) -> std::optional<int>
+    {
+      auto n = r.integer(v, p, 0, 1'000'000);
+      if (n && *n != 1)
+      {
+        r.error(p, "unsupported version " + std::to_string(*n) + " (this build reads version 1)");
+        return std::nullopt;
+      }
+      return n;
+    });
+  optional_key(doc,
+    "object",
+    "",
+    spec.object,
+    [&](const Json& v, const std::string& p) { return r.string(v, p); });
+  optional_key(doc,
+    "parameters",
+    "",
+    spec.parameters,
+    [&](const Json& v, const std::string& p) { return r.numbers(v, p); });
+
+  // World first: the axis names of the world channels depend on the system.
+  if (const auto w = doc.find("world");
+      w != doc.end() && r.object(*w, "world", { "system", "resolution", "iso" }))
+  {
+    optional_key(*w,
+      "system",
+      "world",
+      spec.world.system,
+      [&](const Json& v, const std::string& p)
+      { return r.choice(v, p, "world system", world_systems); });
+    optional_key(*w,
+      "resolution",
+      "world",
+      spec.world.resolution,
+      [&](const Json& v, const std::string& p) { return r.integer(v, p, 2, max_resolution); });
+    optional_key(*w,
+      "iso",
+      "world",
+      spec.world.iso,
+      [&](const Json& v, const std::string& p) { return r.number(v, p); });
+  }
+
+  const auto coords = doc.find("coordinates");
+  if (coords == doc.end())
+  {
+    r.error("coordinates", "missing (the channels of each coordinate)");
+  }
+  else if (!coords->is_object())
+  {
+    r.error("coordinates", std::string("expected an object, found ") + coords->type_name());
+  }
+  else
+  {
+    for (const auto& item : coords->items())
+    {
+      const std::string place = join("coordinates", item.key());
+      CoordinateMapping m;
+      m.name = item.key();
+      if (m.name.empty())
+      {
+        r.error(place, "a coordinate needs a name");
+      }
+      if (!item.value().is_array() || item.value().empty())
+      {
+        r.error(place,
+          item.value().is_array()
+            ? std::string("at least one channel is needed")
+            : std::string("expected an array of channels, found ") + item.value().type_name());
+        continue;
+      }
+      for (std::size_t k = 0; k < item.value().size(); ++k)
+      {
+        if (auto c = read_channel(r, item.value()[k], at(place, k), spec.world.system))
+        {
+          m.channels.push_back(*c);
+        }
+      }
+      spec.coordinates.push_back(std::move(m));
+    }
+  }
+
+  if (const auto a = doc.find("animation");
+      a != doc.end() && r.object(*a, "animation", { "duration", "fps", "path" }))
+  {
+    auto positive = [&](const Json& v, const std::string& p) -> std::optional<double>
+    {
+      auto x = r.number(v, p);
+      if (x && !(*x > 0))
+      {
+        r.error(p, "must be > 0");
+        return std::nullopt;
+      }
+      return x;
+    };
+    optional_key(*a, "duration", "animation", spec.animation.duration, positive);
+    optional_key(*a, "fps", "animation", spec.animation.fps, positive);
+    if (const auto p = a->find("path"); p != a->end())
+    {
+      Path path;
+      read_path(r, *p, "animation.path", path);
+      spec.animation.path = path;
+    }
+  }
+
+  if (const auto s = doc.find("spreadsheet");
+      s != doc.end() && r.object(*s, "spreadsheet", { "cell_size", "spacing", "labels" }))
+  {
+    optional_key(*s,
+      "cell_size",
+      "spreadsheet",
+      spec.spreadsheet.cell_size,
+      [&](const Json& v, const std::string& p) { return r.integer(v, p, 16, max_picture_size); });
+    optional_key(*s,
+      "spacing",
+      "spreadsheet",
+      spec.spreadsheet.spacing,
+      [&](const Json& v, const std::string& p) -> std::optional<double>
+      {
+        auto x = r.number(v, p);
+        if (x && (*x < 0 || *x > 10))
+        {
+          r.error(p, "must be from 0 to 10 (a fraction of the cell)");
+          return std::nullopt;
+        }
+        return x;
+      });
+    optional_key(*s,
+      "labels",
+      "spreadsheet",
+      spec.spreadsheet.labels,
+      [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+  }
+
+  if (const auto g = doc.find("render"); g != doc.end() && r.object(*g,
+                                                             "render",
+                                                             { "width",
+                                                               "height",
+                                                               "background",
+                                                               "colour",
+                                                               "azimuth",
+                                                               "elevation",
+                                                               "inset",
+                                                               "colour_source" }))
+  {
+    RenderSettings& rs = spec.render;
+    auto size = [&](const Json& v, const std::string& p)
+    { return r.integer(v, p, 16, max_picture_size); };
+    auto angle = [&](const Json& v, const std::string& p) { return r.number(v, p); };
+    auto colour = [&](const Json& v, const std::string& p) { return r.rgb(v, p); };
+    optional_key(*g, "width", "render", rs.width, size);
+    optional_key(*g, "height", "render", rs.height, size);
+    optional_key(*g, "background", "render", rs.background, colour);
+    optional_key(*g, "colour", "render", rs.colour, colour);
+    optional_key(*g, "azimuth", "render", rs.azimuth, angle);
+    optional_key(*g, "elevation", "render", rs.elevation, angle);
+    optional_key(*g,
+      "inset",
+      "render",
+      rs.inset,
+      [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+    optional_key(*g,
+      "colour_source",
+      "render",
+      rs.colour_source,
+      [&](const Json& v, const std::string& p)
+      { return r.choice(v, p, "colour source", colour_sources); });
+  }
+
+  if (const auto au = doc.find("audio");
+      au != doc.end() && r.object(*au, "audio", { "sample_rate" }))
+  {
+    optional_key(*au,
+      "sample_rate",
+      "audio",
+      spec.audio.sample_rate,
+      [&](const Json& v, const std::string& p) { return r.integer(v, p, 8000, 384000); });
+  }
+
+  result.errors = std::move(r.errors);
+  return result;
+}
+
+std::string save_mapping(const Spec& spec)
+{
+  Json doc;
+  doc["version"] = spec.version;
+  doc["object"] = spec.object;
+  doc["parameters"] = spec.parameters;
+  doc["world"] = Json{ { "system", name_of(world_systems, spec.world.system) },
+    { "resolution", spec.world.resolution },
+    { "iso", spec.world.iso } };
+  Json coords = Json::object();
+  for (const CoordinateMapping& m : spec.coordinates)
+  {
+    Json channels = Json::array();
+    for (const Channel& c : m.channels)
+    {
+      channels.push_back(channel_json(c, spec.world.system));
+    }
+    coords[m.name] = channels;
+  }
+  doc["coordinates"] = coords;
+  Json animation{ { "duration", spec.animation.duration }, { "fps", spec.animation.fps } };
+  if (const auto& p = spec.animation.path)
+  {
+    animation["path"] = Json{ { "coordinates", p->coordinates },
+      { "points", p->points },
+      { "interpolation", name_of(interpolations, p->interpolation) },
+      { "closed", p->closed },
+      { "timing", name_of(timings, p->timing) },
+      { "key_times", p->key_times } };
+  }
+  doc["animation"] = animation;
+  doc["spreadsheet"] = Json{ { "cell_size", spec.spreadsheet.cell_size },
+    { "spacing", spec.spreadsheet.spacing },
+    { "labels", spec.spreadsheet.labels } };
+  const RenderSettings& rs = spec.render;
+  doc["render"] = Json{ { "width", rs.width },
+    { "height", rs.height },
+    { "background", rs.background },
+    { "colour", rs.colour },
+    { "azimuth", rs.azimuth },
+    { "elevation", rs.elevation },
+    { "inset", rs.inset },
+    { "colour_source", name_of(colour_sources, rs.colour_source) } };
+  doc["audio"] = Json{ { "sample_rate", spec.audio.sample_rate } };
+  std::string text;
+  write(doc, 0, text);
+  return text + "\n";
+}
+
+} // namespace frep::mapping

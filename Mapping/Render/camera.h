@@ -1,0 +1,61 @@
+// The camera of the headless renderer: where the eye is, what it looks at, and how the view is
+// projected onto the picture. `fit_box` builds one camera for a whole spreadsheet or animation
+// from the world-space box every shape lives in, so all cells and frames are framed alike and
+// shapes stay comparable.
+#pragma once
+
+#include <array>
+
+namespace frep::render
+{
+
+using Vec3 = std::array<double, 3>;
+
+struct Camera
+{
+  Vec3 position{ 0.0, -5.0, 0.0 };
+  Vec3 focal_point{ 0.0, 0.0, 0.0 };
+  /// Need not be orthogonal to the view direction (it is made so); must not be parallel to it.
+  Vec3 view_up{ 0.0, 0.0, 1.0 };
+  /// Perspective: the full vertical field of view, degrees (0 < angle < 180).
+  double view_angle_deg = 30.0;
+  /// Orthographic (parallel) projection instead of perspective ...
+  bool orthographic = false;
+  /// ... showing parallel_scale world units from the view centre to the top edge.
+  double parallel_scale = 1.0;
+  /// Geometry nearer than this distance along the view direction is clipped away (> 0).
+  double near_distance = 0.01;
+};
+
+/// The camera's orthonormal frame: right, up and forward (from the eye towards the focal point).
+/// A degenerate camera (eye on the focal point, up parallel to the view) gets a usable frame.
+struct CameraFrame
+{
+  Vec3 right;
+  Vec3 up;
+  Vec3 forward;
+};
+CameraFrame camera_frame(const Camera& camera);
+
+struct FitOptions
+{
+  double view_angle_deg = 30.0;
+  bool orthographic = false;
+  /// The bounding sphere's diameter as a fraction of the picture's shorter side.
+  double fill = 0.9;
+};
+
+/// A camera looking at the centre of the box [lo, hi] from the direction (azimuth, elevation),
+/// far enough that the box's bounding sphere spans `fill` of the shorter side of a picture of
+/// width / height = aspect. Directions, with z up: elevation is the angle above the xy plane;
+/// azimuth turns counter-clockwise about +z (seen from above) starting from -y, so azimuth 0,
+/// elevation 0 looks along +y with x to the right; azimuth 90 looks along -x with y to the
+/// right. View up stays continuous through elevation +-90 (looking straight down or up).
+Camera fit_box(const Vec3& lo,
+  const Vec3& hi,
+  double aspect,
+  double azimuth_deg,
+  double elevation_deg,
+  const FitOptions& options = {});
+
+} // namespace frep::render

@@ -1,0 +1,68 @@
+// The pictures of a multimedia mapping, drawn headless with FRepKit's software renderer
+// (Mapping/Render; the packaged VTK renders only through X, and `frepkit map` must not need a
+// display): a cell or frame's section with one camera for every cell and frame, the
+// spreadsheet of cells with their labels, a frame's inset (the plane of the dynamic coordinates
+// as a checkerboard with the path and the current point) and the path picture.
+#pragma once
+
+#include "mapping_plan.h"
+#include "section_mesh.h"
+
+#include "camera.h"
+#include "image.h"
+#include "text.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frep::mapping
+{
+
+/// What drawing needs besides the geometry: a font (one per thread: FreeType faces are not
+/// shared between threads). Without a font (none installed) pictures have no labels.
+struct PictureKit
+{
+  PictureKit();
+  std::optional<render::Font> font;
+  std::string font_error; ///< why there is no font
+};
+
+/// The camera for every cell and frame of the plan: the world box seen from the render
+/// settings' azimuth and elevation, fitted for the aspect ratio width / height.
+render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, double aspect);
+
+/// The section drawn with the sample's colour (or the section's vertex colours), opacity and
+/// light intensity over the sample's background. A 2-D section (segments) is drawn as seen
+/// from +z, fitted to the world box. `threads` 0 = all cores.
+render::Image render_sample(const Plan& plan,
+  const Section& section,
+  const Sample& sample,
+  const render::Camera& camera,
+  int width,
+  int height,
+  const RenderSettings& settings,
+  int threads = 1);
+
+/// The cells (pictures in plan order: column fastest, then row, then layer) on the plan's grid
+/// with gaps, each labelled with its coordinate values, the grid coordinates named along the
+/// top and left edges. Layers (a third grid axis) are stacked as blocks left to right.
+render::Image compose_spreadsheet(const Plan& plan,
+  const std::vector<render::Image>& cells,
+  const Spec& spec,
+  PictureKit* kit);
+
+/// Draws the frame's caption (its time and coordinate values) and, when the settings ask for
+/// it and there are two dynamic coordinates, the inset of the dynamic plane in a corner.
+void decorate_frame(render::Image& frame,
+  const Plan& plan,
+  const Sample& sample,
+  const RenderSettings& settings,
+  PictureKit* kit);
+
+/// The plane of the two dynamic coordinates with the path and every frame's point marked,
+/// `size` pixels square.
+render::Image path_picture(const Plan& plan, int size, PictureKit* kit);
+
+} // namespace frep::mapping

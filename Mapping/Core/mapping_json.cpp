@@ -1143,7 +1143,8 @@ LoadResult load_mapping(const std::string& json_text)
                                                                "azimuth",
                                                                "elevation",
                                                                "inset",
-                                                               "colour_source" }))
+                                                               "colour_source",
+                                                               "view_box" }))
   {
     RenderSettings& rs = spec.render;
     auto size = [&](const Json& v, const std::string& p)
@@ -1161,6 +1162,25 @@ LoadResult load_mapping(const std::string& json_text)
       "render",
       rs.inset,
       [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+    if (const auto vb = g->find("view_box"); vb != g->end())
+    {
+      if (const auto box = r.fixed_numbers<6>(*vb, "render.view_box"))
+      {
+        bool ok = true;
+        for (int k = 0; k < 3; ++k)
+        {
+          ok = ok && (*box)[k] < (*box)[k + 3];
+        }
+        if (ok)
+        {
+          rs.view_box = *box;
+        }
+        else
+        {
+          r.error("render.view_box", "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min < max");
+        }
+      }
+    }
     optional_key(*g,
       "colour_source",
       "render",
@@ -1226,6 +1246,10 @@ std::string save_mapping(const Spec& spec)
     { "elevation", rs.elevation },
     { "inset", rs.inset },
     { "colour_source", name_of(colour_sources, rs.colour_source) } };
+  if (rs.view_box)
+  {
+    doc["render"]["view_box"] = *rs.view_box;
+  }
   doc["audio"] = Json{ { "sample_rate", spec.audio.sample_rate } };
   std::string text;
   write(doc, 0, text);

@@ -188,6 +188,10 @@ struct RenderSettings
   double azimuth = 35.0;  ///< degrees, camera around the world z axis
   double elevation = 25.0;
   bool inset = true; ///< frames: the dynamic-coordinate plane with the path and current point
+  /// The world-space box the one camera of every cell and frame frames (xmin, ymin, zmin, xmax,
+  /// ymax, zmax); unset = the plan's world box. A box that fits the shapes tightly makes them
+  /// larger in the pictures (JSON "view_box").
+  std::optional<std::array<double, 6>> view_box;
   /// Where the shape's colour comes from when no world coordinate has a colour channel:
   /// Uniform = `colour` (or the colour channels of non-world coordinates, per sample);
   /// Attributes = the model's s[1..3] as per-vertex RGB (JSON "colour_source": "attributes").

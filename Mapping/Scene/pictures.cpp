@@ -78,12 +78,47 @@ PictureKit::PictureKit()
 
 render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, double aspect)
 {
-  const auto& b = plan.world_box;
-  return render::fit_box({ b[0].lo, b[1].lo, b[2].lo },
-    { b[0].hi, b[1].hi, b[2].hi },
-    aspect,
-    settings.azimuth,
-    settings.elevation);
+  std::array<double, 3> lo, hi;
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
+    hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
+  }
+  // fit_box frames the box's bounding sphere; move the eye in until the box's eight corners
+  // (not the sphere, which is up to sqrt(3) wider) fill the picture.
+  const double fill = 0.92;
+  render::Camera camera = render::fit_box(lo, hi, aspect, settings.azimuth, settings.elevation);
+  if (camera.orthographic)
+  {
+    return camera;
+  }
+  const render::CameraFrame frame = render::camera_frame(camera);
+  const double tan_v = std::tan(0.5 * camera.view_angle_deg * 3.14159265358979323846 / 180.0);
+  const double tan_h = tan_v * aspect;
+  double distance = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    std::array<double, 3> c;
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = ((corner >> k) & 1 ? hi[k] : lo[k]) - camera.focal_point[k];
+    }
+    const double x = c[0] * frame.right[0] + c[1] * frame.right[1] + c[2] * frame.right[2];
+    const double y = c[0] * frame.up[0] + c[1] * frame.up[1] + c[2] * frame.up[2];
+    const double z = c[0] * frame.forward[0] + c[1] * frame.forward[1] + c[2] * frame.forward[2];
+    // depth of the corner = distance + z; it must see |x| and |y| within the fill
+    distance = std::max(distance, std::abs(x) / (fill * tan_h) - z);
+    distance = std::max(distance, std::abs(y) / (fill * tan_v) - z);
+  }
+  if (distance > 0 && std::isfinite(distance))
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      camera.position[k] = camera.focal_point[k] - distance * frame.forward[k];
+    }
+    camera.near_distance = 0.01 * distance;
+  }
+  return camera;
 }
 
 render::Image render_sample(const Plan& plan,

@@ -1,22 +1,17 @@
 #!/usr/bin/env bash
-# The main job until the Homotopic Fun demo exists: check a 5-D HyperFun model and draw its
-# z = 0 cross-sections at the four corners and the centre of the (x4, x5) square, evaluated by
-# the compiled engine through `frepkit eval`. '#' marks F >= 0 (inside).
+# The main job: "Homotopic Fun in 5D Space" end to end. One 5-D HyperFun function
+# (Examples/homotopic/meta5d.hf) blends four key shapes of different topology — Cat, Robot,
+# NiHon, Rob_let — and Examples/homotopic/homotopic.json maps it onto multimedia coordinates:
+# writes into OUTDIR (default ./out/homotopic)
+#   spreadsheet.png  the 5x5 spreadsheet of 3-D cross-sections (x4 across, x5 down)
+#   path.png         the closed path through the (x4, x5) plane with every frame's point
+#   homotopic.mp4    10 s at 24 fps, 1280x720, with the checkerboard inset and the sound track
+#   homotopic.wav    the sound track (pitch follows x4, loudness x5)
+#   frames/          the 240 frames as PNG (kept: a second run resumes instead of redrawing)
+#   cat.stl robot.stl nihon.stl roblet.stl   the key shapes as binary STL
+#   manifest.json    everything written, with each cell's and frame's coordinate values
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 frepkit=${FREPKIT:-"$here/../build/bin/frepkit"}
-model="$here/homotopy5d.hf"
-
-"$frepkit" check "$model"
-
-for corner in "0 0" "1 0" "0 1" "1 1" "0.5 0.5"; do
-  set -- $corner
-  echo
-  echo "x4 = $1, x5 = $2 (z = 0):"
-  awk -v u="$1" -v w="$2" 'BEGIN {
-    for (j = 0; j < 21; j++) for (i = 0; i < 41; i++)
-      printf "%.6f %.6f 0 %s %s\n", -5 + i * 0.25, 5 - j * 0.5, u, w }' |
-    "$frepkit" eval "$model" |
-    awk '{ c = ($1 == "nan" || $1 ~ /^error/) ? "?" : ($1 >= 0 ? "#" : ".");
-           line = line c; if (NR % 41 == 0) { print "  " line; line = "" } }'
-done
+out=${1:-out/homotopic}
+"$frepkit" demo homotopic -O "$out" --examples "$here"

@@ -3,6 +3,7 @@
 #include "eval_command.h"
 #include "hfp_command.h"
 #ifdef FREPKIT_HAVE_MAP
+#include "demo_command.h"
 #include "map_command.h"
 #endif
 #include "mesh_command.h"
@@ -72,6 +73,8 @@ int main(int argc, char** argv)
 #ifdef FREPKIT_HAVE_MAP
   frepkit::MapOptions map_options;
   CLI::App* map = frepkit::add_map_command(app, map_options);
+  frepkit::DemoOptions demo_options;
+  CLI::App* demo = frepkit::add_demo_command(app, demo_options);
 #endif
   // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
   app
@@ -113,6 +116,10 @@ int main(int argc, char** argv)
       if (map->parsed())
       {
         return frepkit::run_map(map_options);
+      }
+      if (demo->parsed())
+      {
+        return frepkit::run_demo(demo_options);
       }
 #endif
       return 0;

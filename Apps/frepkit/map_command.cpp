@@ -167,6 +167,31 @@ struct Stage
   std::string detail;
 };
 
+// Where a stage's time goes, summed over the workers (thread seconds, not wall time).
+struct Ledger
+{
+  std::mutex mutex;
+  double meshing = 0, rendering = 0, writing = 0;
+  void add(double mesh, double render, double write)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    meshing += mesh;
+    rendering += render;
+    writing += write;
+  }
+  std::string text()
+  {
+    char line[160];
+    std::snprintf(line,
+      sizeof line,
+      "; worker time: meshing %.1f s, drawing %.1f s, PNG %.1f s",
+      meshing,
+      rendering,
+      writing);
+    return line;
+  }
+};
+
 } // namespace
 
 CLI::App* add_map_command(CLI::App& app, MapOptions& o)
@@ -374,23 +399,33 @@ int run_map(const MapOptions& options)
     const int cell_px = spec.spreadsheet.cell_size;
     const frep::render::Camera camera = mapping::plan_camera(plan, spec.render, 1.0);
     std::vector<frep::render::Image> pictures(plan.cells.size());
+    Ledger cell_ledger;
     parallel_samples(plan.cells.size(),
       workers,
       [&](std::size_t i, int worker)
       {
+        const auto m0 = Clock::now();
         const mapping::Section section = section_of(plan.cells[i], worker);
+        const auto r0 = Clock::now();
         pictures[i] = mapping::render_sample(
           plan, section, plan.cells[i], camera, cell_px, cell_px, spec.render);
+        cell_ledger.add(std::chrono::duration<double>(r0 - m0).count(), seconds_since(r0), 0.0);
         advance();
       });
+    std::vector<std::array<int, 4>> rects;
     const frep::render::Image sheet =
-      mapping::compose_spreadsheet(plan, pictures, spec, kits.front().get());
+      mapping::compose_spreadsheet(plan, pictures, spec, kits.front().get(), &rects);
     write_png_file(out_dir / "spreadsheet.png", sheet);
     nlohmann::json cells = nlohmann::json::array();
-    for (const auto& c : plan.cells)
+    for (std::size_t i = 0; i < plan.cells.size(); ++i)
     {
+      const auto& c = plan.cells[i];
       nlohmann::json j = sample_json(c, names);
       j["cell"] = { c.cell[0], c.cell[1], c.cell[2] };
+      if (i < rects.size())
+      {
+        j["rect"] = rects[i]; // x, y, width, height of the cell's picture in spreadsheet.png
+      }
       cells.push_back(j);
     }
     files.push_back({ { "file", "spreadsheet.png" },
@@ -402,7 +437,7 @@ int run_map(const MapOptions& options)
     stages.push_back({ "spreadsheet",
       seconds_since(t0),
       std::to_string(plan.cells.size()) + " cells, " + std::to_string(sheet.width) + "x" +
-        std::to_string(sheet.height) });
+        std::to_string(sheet.height) + cell_ledger.text() });
   }
 
   // 2b. The shape alone, when nothing varies.
@@ -467,6 +502,7 @@ int run_map(const MapOptions& options)
     const frep::render::Camera camera = mapping::plan_camera(
       plan, spec.render, static_cast<double>(spec.render.width) / spec.render.height);
     std::atomic<std::size_t> reused_count{ 0 };
+    Ledger frame_ledger;
     parallel_samples(plan.frames.size(),
       workers,
       [&](std::size_t k, int worker)
@@ -481,11 +517,17 @@ int run_map(const MapOptions& options)
           return;
         }
         const mapping::Sample& frame = plan.frames[k];
+        const auto m0 = Clock::now();
         const mapping::Section section = section_of(frame, worker);
+        const auto r0 = Clock::now();
         frep::render::Image picture = mapping::render_sample(
           plan, section, frame, camera, spec.render.width, spec.render.height, spec.render);
         mapping::decorate_frame(picture, plan, frame, spec.render, kits[worker].get());
+        const auto w0 = Clock::now();
         write_png_file(path, picture);
+        frame_ledger.add(std::chrono::duration<double>(r0 - m0).count(),
+          std::chrono::duration<double>(w0 - r0).count(),
+          seconds_since(w0));
         advance();
       });
     reused = reused_count;
@@ -510,7 +552,8 @@ int run_map(const MapOptions& options)
     stages.push_back({ "frames",
       seconds_since(t0),
       std::to_string(plan.frames.size()) + " frames" +
-        (reused ? " (" + std::to_string(reused) + " kept from an earlier run)" : "") });
+        (reused ? " (" + std::to_string(reused) + " kept from an earlier run)" : "") +
+        frame_ledger.text() });
   }
 
   // 5. The sound track.

@@ -175,8 +175,13 @@ render::Image render_sample(const Plan& plan,
 render::Image compose_spreadsheet(const Plan& plan,
   const std::vector<render::Image>& cells,
   const Spec& spec,
-  PictureKit* kit)
+  PictureKit* kit,
+  std::vector<std::array<int, 4>>* rects)
 {
+  if (rects)
+  {
+    rects->clear();
+  }
   const int columns = std::max(1, plan.grid_shape[0]);
   const int rows = std::max(1, plan.grid_shape[1]);
   const int layers = std::max(1, plan.grid_shape[2]);
@@ -224,6 +229,10 @@ render::Image compose_spreadsheet(const Plan& plan,
     const int x = margin + l * (block_w + 3 * gap) + c * (cell + gap);
     const int y = margin + title_h + r * (cell + label_h + gap);
     render::composite_over(sheet, cells[i], x, y);
+    if (rects)
+    {
+      rects->push_back({ x, y, cells[i].width, cells[i].height });
+    }
     render::stroke_rect(sheet, { x - 0.5, y - 0.5, x + cell + 0.5, y + cell + 0.5 }, 1.0, border);
     if (labels)
     {

@@ -48,10 +48,12 @@ render::Image render_sample(const Plan& plan,
 /// The cells (pictures in plan order: column fastest, then row, then layer) on the plan's grid
 /// with gaps, each labelled with its coordinate values, the grid coordinates named along the
 /// top and left edges. Layers (a third grid axis) are stacked as blocks left to right.
+/// `rects`, when given, receives each cell picture's place (x, y, width, height in pixels).
 render::Image compose_spreadsheet(const Plan& plan,
   const std::vector<render::Image>& cells,
   const Spec& spec,
-  PictureKit* kit);
+  PictureKit* kit,
+  std::vector<std::array<int, 4>>* rects = nullptr);
 
 /// Draws the frame's caption (its time and coordinate values) and, when the settings ask for
 /// it and there are two dynamic coordinates, the inset of the dynamic plane in a corner.

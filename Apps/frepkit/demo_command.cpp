@@ -1,0 +1,186 @@
+#include "demo_command.h"
+
+#include "atomic_output.h"
+#include "map_command.h"
+#include "mesh_command.h"
+#include "user_error.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <climits>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace frepkit
+{
+namespace
+{
+
+// The Examples folder: the source tree the tool was built from, else <prefix>/share/frepkit
+// next to an installed tool.
+fs::path find_examples(const std::string& requested)
+{
+  if (!requested.empty())
+  {
+    return requested;
+  }
+  std::vector<fs::path> candidates;
+#ifdef FREPKIT_EXAMPLES_DIR
+  candidates.emplace_back(FREPKIT_EXAMPLES_DIR);
+#endif
+  char executable[PATH_MAX];
+  const ssize_t length = ::readlink("/proc/self/exe", executable, sizeof executable - 1);
+  if (length > 0)
+  {
+    const fs::path bin =
+      fs::path(std::string(executable, static_cast<std::size_t>(length))).parent_path();
+    candidates.push_back(bin / ".." / "share" / "frepkit" / "Examples");
+  }
+  for (const fs::path& c : candidates)
+  {
+    if (fs::exists(c / "homotopic" / "meta5d.hf"))
+    {
+      return c;
+    }
+  }
+  throw UserError("cannot find the examples (Examples/homotopic/meta5d.hf); give --examples DIR");
+}
+
+std::size_t stl_triangles(const fs::path& stl)
+{
+  std::error_code ec;
+  const auto size = fs::file_size(stl, ec);
+  return ec || size < 84 ? 0 : static_cast<std::size_t>((size - 84) / 50);
+}
+
+} // namespace
+
+CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
+{
+  CLI::App* cmd = app.add_subcommand("demo",
+    "The main job: 'Homotopic Fun in 5D Space' end to end (key shapes as STL, the 5x5 "
+    "spreadsheet, the path, the animation with sound as MP4, a manifest)");
+  cmd->add_option("name", o.name, "the demo (only 'homotopic')")
+    ->check(CLI::IsMember({ "homotopic" }));
+  cmd->add_option("-O,--output-directory", o.output_directory, "directory for the outputs")
+    ->required();
+  cmd->add_option(
+    "--examples", o.examples, "the Examples folder (default: found next to the tool)");
+  cmd->add_option("--frames", o.frames, "number of frames (default: the mapping's 240)")
+    ->check(CLI::Range(1, 100000));
+  cmd->add_option("--resolution", o.resolution, "grid samples per cell and frame (default 128)")
+    ->check(CLI::Range(8, 1024));
+  cmd->add_option("--mesh-grid", o.mesh_grid, "grid of the key shapes' STL meshes (default 256)")
+    ->check(CLI::Range(8, 2048));
+  cmd->add_flag("--force", o.force, "render every frame again");
+  cmd->add_option("-j,--threads", o.threads, "worker threads (default: all cores)")
+    ->check(CLI::Range(0, 1024));
+  cmd->add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
+  return cmd;
+}
+
+int run_demo(const DemoOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path examples = find_examples(options.examples) / "homotopic";
+  const fs::path out(options.output_directory);
+
+  // 1. The mapping (it validates everything before writing anything).
+  MapOptions map;
+  map.model = (examples / "meta5d.hf").string();
+  map.mapping = (examples / "homotopic.json").string();
+  map.output_directory = out.string();
+  map.name = "homotopic";
+  map.frames = options.frames;
+  map.resolution = options.resolution;
+  map.force = options.force;
+  map.threads = options.threads;
+  map.quiet = options.quiet;
+  const int code = run_map(map);
+  if (code != 0)
+  {
+    return code;
+  }
+
+  // 2. The four key shapes, each from its own file, on the common box.
+  const std::array<const char*, 4> shapes{ "cat", "robot", "nihon", "roblet" };
+  nlohmann::json meshes = nlohmann::json::array();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const char* shape : shapes)
+  {
+    MeshOptions mesh;
+    mesh.model = (examples / (std::string(shape) + ".hf")).string();
+    mesh.output = (out / (std::string(shape) + ".stl")).string();
+    mesh.box = { -10, -10, -10, 10, 10, 10 };
+    mesh.grid = { options.mesh_grid };
+    mesh.threads = options.threads;
+    mesh.quiet = true;
+    if (run_mesh(mesh) != 0)
+    {
+      throw UserError(std::string("meshing ") + shape + " failed");
+    }
+    meshes.push_back({ { "file", std::string(shape) + ".stl" },
+      { "kind", "mesh" },
+      { "model", mesh.model },
+      { "grid", options.mesh_grid },
+      { "triangles", stl_triangles(mesh.output) } });
+  }
+  const double mesh_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // 3. One manifest: the map's, with the meshes added.
+  const fs::path manifest_path = out / "manifest.json";
+  nlohmann::json manifest;
+  {
+    std::ifstream in(manifest_path);
+    manifest = nlohmann::json::parse(in, nullptr, false);
+  }
+  if (manifest.is_discarded() || !manifest.is_object())
+  {
+    throw UserError("cannot read " + manifest_path.string() + " back");
+  }
+  manifest["demo"] = "Homotopic Fun in 5D Space";
+  for (auto& m : meshes)
+  {
+    manifest["files"].push_back(m);
+  }
+  manifest["seconds"]["meshes"] = mesh_seconds;
+  const double total =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  manifest["seconds"]["total"] = total;
+  {
+    AtomicOutput file(manifest_path.string());
+    file.stream() << manifest.dump(2) << "\n";
+    file.commit();
+  }
+  if (!options.quiet)
+  {
+    char line[200];
+    std::snprintf(line,
+      sizeof line,
+      "  %-12s %7.2f s  cat.stl robot.stl nihon.stl roblet.stl (grid %d)\n",
+      "key shapes",
+      mesh_seconds,
+      options.mesh_grid);
+    std::cerr << line;
+    std::snprintf(line,
+      sizeof line,
+      "  %-12s %7.2f s  everything in %s\n",
+      "demo",
+      total,
+      out.string().c_str());
+    std::cerr << line;
+  }
+  return 0;
+}
+
+} // namespace frepkit

@@ -1,0 +1,36 @@
+// frepkit demo homotopic -O DIR: the main job, "Homotopic Fun in 5D Space" end to end: the four
+// key shapes as binary STL meshes (cat.stl, robot.stl, nihon.stl, roblet.stl), then the mapping
+// Examples/homotopic/homotopic.json of Meta5D through `frepkit map` (spreadsheet.png, path.png,
+// frames/, homotopic.wav, homotopic.mp4), and one manifest.json listing all of it.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace CLI
+{
+class App;
+}
+
+namespace frepkit
+{
+
+struct DemoOptions
+{
+  std::string name = "homotopic";
+  std::string output_directory;
+  std::string examples; ///< the Examples folder; default: the source tree's, else next to the tool
+  std::optional<int> frames;
+  std::optional<int> resolution;
+  int mesh_grid = 256; ///< grid of the key shapes' meshes
+  bool force = false;
+  int threads = 0;
+  bool quiet = false;
+};
+
+CLI::App* add_demo_command(CLI::App& app, DemoOptions& options);
+
+/// Returns the process exit code; user errors are thrown as UserError.
+int run_demo(const DemoOptions& options);
+
+} // namespace frepkit

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The main job end to end at the demo's own settings (spreadsheet cells and frames at 128^3),
+# with 48 frames instead of 240 to keep the suite short: every output exists; the spreadsheet
+# has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
+# count and an audio stream of the same duration; the key shapes' STL files are closed
+# meshes; the manifest lists everything.
+#   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK BASELINE
+set -u
+frepkit=$(realpath "$1")
+media=$(realpath "$2")
+image=$(realpath "$3")
+mesh=$(realpath "$4")
+baseline=$(realpath "$5")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+checks=0
+source "$(dirname "$0")/../Apps/test_helpers.sh"
+cd "$work" || exit 1
+field() { echo "$2" | awk -v k="$1" '{ for (i = 1; i < NF; i++) if ($i == k) print $(i + 1) }'; }
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= t * m) }'; }
+
+run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48
+echo "$err"
+for f in spreadsheet.png path.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
+  if [ -s "demo/$f" ]; then pass "demo/$f written"; else fail "demo/$f missing"; fi
+done
+
+line=$("$image" cells demo/spreadsheet.png demo/manifest.json)
+echo "spreadsheet: $line"
+expect_in "25 cells" "$line" "cells 25 nonempty 25"
+line=$("$image" compare demo/spreadsheet.png "$baseline")
+echo "against the baseline: $line"
+if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference "$line")" 'BEGIN { exit !(d < 0.002 && m < 0.003) }'; then
+  pass "spreadsheet matches its baseline"
+else
+  fail "spreadsheet differs from its baseline ($line); the picture is kept as $work/demo/spreadsheet.png"
+  cp demo/spreadsheet.png "${TMPDIR:-/tmp}/homotopic_spreadsheet.failed.png" 2>/dev/null
+fi
+
+line=$("$media" movie demo/homotopic.mp4)
+echo "movie: $line"
+expect_in "48 frames" "frames $(field frames "$line")" "frames 48"
+if near "$(field duration "$line")" 2.0 0.05; then pass "movie lasts 48 / 24 s"; else fail "movie duration: $line"; fi
+expect_in "1280x720" "$(field width "$line")x$(field height "$line")" "1280x720"
+expect_in "movie has audio" "$(field audio "$line")" "1"
+if near "$(field audio_duration "$line")" "$(field duration "$line")" 0.05; then pass "audio as long as the video"; else fail "audio duration: $line"; fi
+
+for shape in cat robot nihon roblet; do
+  line=$("$mesh" "demo/$shape.stl" 2>&1)
+  if [[ "$line" == *"boundary 0 nonmanifold 0 misoriented 0 degenerate 0"* ]]; then pass "$shape.stl closed and oriented"; else fail "$shape.stl: $line"; fi
+done
+
+count=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print(len(m['files']))")
+expect_in "manifest lists 4 pictures/sounds/movies + 4 meshes" "files $count" "files 9"
+
+echo "$checks checks, $failures failed"
+[ "$failures" -eq 0 ]

@@ -186,9 +186,11 @@ int vtkSpreadsheetLayout::RequestData(vtkInformation*,
   const double size[3] = { std::max(box[1] - box[0], 1e-12),
     std::max(box[3] - box[2], 1e-12),
     std::max(box[5] - box[4], 1e-12) };
-  const double step[3] = {
-    size[0] * (1 + this->Spacing), size[1] * (1 + this->Spacing), size[2] * (1 + this->Spacing)
-  };
+  // Rows also make room for the labels under the cells.
+  const double labelRoom = this->Labels ? 1.6 * this->LabelHeight * size[2] : 0.0;
+  const double step[3] = { size[0] * (1 + this->Spacing),
+    size[1] * (1 + this->Spacing),
+    size[2] * (1 + this->Spacing) + labelRoom };
 
   vtkNew<vtkAppendPolyData> append;
   const vtkIdType count = static_cast<vtkIdType>(cells.size());

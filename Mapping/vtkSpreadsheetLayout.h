@@ -5,12 +5,12 @@
  * vtkSpreadsheetLayout takes the output of vtkMultimediaMapper in its Spreadsheet mode (a
  * vtkPartitionedDataSetCollection whose data sets carry "CellIndex" in their field data) and
  * lays the cells out in one vtkPolyData, so the whole spreadsheet renders as one image:
- * column c moves by +c (1 + Spacing) W along world x, row r by -r (1 + Spacing) H along world z
- * (rows run top to bottom when world z is up), layer l by +l (1 + Spacing) D along world y,
- * where W, H, D are the sizes of the box that holds every cell (the mapper's "WorldBounds"
- * when present, else the union of the cells' bounds). Every cell is moved the same way, so the
- * shapes stay comparable; view the result with a parallel projection from -y for identical
- * views of all cells.
+ * column c moves by +c (1 + Spacing) W along world x, row r by -r ((1 + Spacing) D + L) along
+ * world z (rows run top to bottom when world z is up; L = 1.6 LabelHeight D is room for the
+ * labels when they are on), layer l by +l (1 + Spacing) H along world y, where W, H, D are the
+ * sizes of the box that holds every cell (the mapper's "WorldBounds" when present, else the union
+ * of the cells' bounds). Every cell is moved the same way, so the shapes stay comparable; view the
+ * result with a parallel projection from -y for identical views of all cells.
  *
  * Borders (a rectangle around each cell in the plane behind it) and labels (the cell's
  * "Label", e.g. "x4 = 0.25, x5 = 0.5", as vtkVectorText geometry under the cell) are optional.

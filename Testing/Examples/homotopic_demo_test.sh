@@ -4,13 +4,14 @@
 # has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
 # count and an audio stream of the same duration; the key shapes' STL files are closed
 # meshes; the manifest lists everything.
-#   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK BASELINE
+#   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK SPREADSHEET_BASELINE FRAME_BASELINE
 set -u
 frepkit=$(realpath "$1")
 media=$(realpath "$2")
 image=$(realpath "$3")
 mesh=$(realpath "$4")
 baseline=$(realpath "$5")
+frame_baseline=$(realpath "$6")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -36,6 +37,15 @@ if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference 
 else
   fail "spreadsheet differs from its baseline ($line); the picture is kept as $work/demo/spreadsheet.png"
   cp demo/spreadsheet.png "${TMPDIR:-/tmp}/homotopic_spreadsheet.failed.png" 2>/dev/null
+fi
+
+line=$("$image" compare demo/frames/frame_00020.png "$frame_baseline")
+echo "frame 20 against its baseline: $line"
+if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference "$line")" 'BEGIN { exit !(d < 0.002 && m < 0.003) }'; then
+  pass "frame 20 (shape, caption, inset) matches its baseline"
+else
+  fail "frame 20 differs from its baseline ($line)"
+  cp demo/frames/frame_00020.png "${TMPDIR:-/tmp}/homotopic_frame_20.failed.png" 2>/dev/null
 fi
 
 line=$("$media" movie demo/homotopic.mp4)

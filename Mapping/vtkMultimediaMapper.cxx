@@ -266,6 +266,7 @@ int vtkMultimediaMapper::RequestInformation(vtkInformation*,
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  outInfo->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
 
   // The plan (and so the time steps) depends on the object's coordinates: bring the object up
   // to date now. FRep producers only parse, compile or specialise here (milliseconds).
@@ -433,9 +434,29 @@ int vtkMultimediaMapper::RequestData(vtkInformation*,
   }
 
   const std::shared_ptr<const frep::Model> model = object->GetModel();
+  // Distributed runs: piece p of n meshes the samples i with i % n == p (the others stay empty
+  // partitioned data sets, so every rank has the same structure and names); the pieces
+  // together hold every sample once.
+  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                      : 0;
+  const int pieces =
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+      ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+      : 1;
+  this->SamplesMeshed = 0;
   output->SetNumberOfPartitionedDataSets(static_cast<unsigned>(samples.size()));
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
+    if (static_cast<int>(i % static_cast<std::size_t>(pieces)) != piece)
+    {
+      vtkNew<vtkPartitionedDataSet> empty;
+      output->SetPartitionedDataSet(static_cast<unsigned>(i), empty);
+      output->GetMetaData(static_cast<unsigned>(i))
+        ->Set(vtkCompositeDataSet::NAME(), samples[i]->label.c_str());
+      continue;
+    }
+    ++this->SamplesMeshed;
     if (this->CheckAbort())
     {
       output->Initialize();

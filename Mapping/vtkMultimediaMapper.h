@@ -26,6 +26,11 @@
  * UPDATE_TIME_STEP (the last frame at or before it; the first frame without a request), so
  * ParaView's animation toolbar and VTK's time-aware writers play the animation.
  *
+ * Pieces (CAN_HANDLE_PIECE_REQUEST): piece p of n meshes the samples i with i % n == p and
+ * leaves the others as empty partitioned data sets (same structure and names on every rank), so
+ * `mpiexec -n 2 pvbatch` shares the cells between the ranks and together they hold every cell
+ * once.
+ *
  * The section of each sample is the engine's specialisation of the model (a 3-D tape) meshed
  * with interval culling on all cores (frep::mapping::make_section), the same code that
  * `frepkit map` runs. A mapping that does not fit the object (an unmapped coordinate, a name
@@ -109,6 +114,12 @@ public:
   int GetNumberOfFrames() const;
   int GetNumberOfCells() const;
 
+  /**
+   * Samples this piece meshed in the last execution (all of them in a serial run; about 1/n
+   * of them as piece p of n).
+   */
+  int GetNumberOfSamplesMeshed() const { return this->SamplesMeshed; }
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -125,6 +136,7 @@ protected:
   int OutputMode = SPREADSHEET;
   int Resolution = 0;
   int NumberOfThreads = 0;
+  int SamplesMeshed = 0;
 
 private:
   vtkMultimediaMapper(const vtkMultimediaMapper&) = delete;

@@ -246,7 +246,36 @@ int TestMultimediaMapper(int, char*[])
   aborted->Update();
   FREPKIT_CHECK(failures, aborted->GetOutput()->GetNumberOfPartitionedDataSets() == 0);
 
-  // 6. Set/Get and PrintSelf.
+  // 6. Pieces: piece p of 2 meshes every other cell; the two pieces hold every cell once.
+  vtkIdType triangles[2] = { 0, 0 };
+  for (int p = 0; p < 2; ++p)
+  {
+    vtkNew<vtkMultimediaMapper> piece;
+    piece->SetInputConnection(source->GetOutputPort());
+    piece->SetMapping(mapping);
+    piece->UpdatePiece(p, 2, 0);
+    auto* out = piece->GetOutput();
+    FREPKIT_CHECK(failures, out->GetNumberOfPartitionedDataSets() == 3);
+    FREPKIT_CHECK(failures, piece->GetNumberOfSamplesMeshed() == (p == 0 ? 2 : 1));
+    for (unsigned i = 0; i < out->GetNumberOfPartitionedDataSets(); ++i)
+    {
+      const bool mine = static_cast<int>(i % 2) == p;
+      vtkPolyData* poly = Cell(out, i);
+      FREPKIT_CHECK(failures, mine == (poly != nullptr));
+      triangles[p] += poly ? poly->GetNumberOfPolys() : 0;
+      const char* name = out->GetMetaData(i)->Get(vtkCompositeDataSet::NAME());
+      FREPKIT_CHECK(failures, name && std::string(name).find("x4 = ") == 0);
+    }
+  }
+  vtkIdType whole = 0;
+  for (unsigned i = 0; i < 3; ++i)
+  {
+    whole += Cell(cells, i) ? Cell(cells, i)->GetNumberOfPolys() : 0;
+  }
+  FREPKIT_CHECK(failures, triangles[0] + triangles[1] == whole);
+  FREPKIT_CHECK(failures, mapper->GetNumberOfSamplesMeshed() == 3);
+
+  // 7. Set/Get and PrintSelf.
   mapper->SetResolution(32);
   FREPKIT_CHECK(failures, mapper->GetResolution() == 32);
   mapper->SetNumberOfThreads(1);

@@ -16,6 +16,8 @@ packages=(
   libpng-dev libjpeg-dev libx11-dev libgl-dev libexpat1-dev zlib1g-dev liblzma-dev
   # the headless renderer's labels (Mapping/Render: DejaVu Sans)
   fonts-dejavu-core
+  # mpiexec for the ParaView plug-in's distributed test (mpiexec -n 2 pvbatch)
+  openmpi-bin
   # toolchain, engine, command line, tests and benchmarks
   build-essential cmake pkg-config git
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev

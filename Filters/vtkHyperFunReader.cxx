@@ -1,0 +1,197 @@
+#include "vtkHyperFunReader.h"
+
+#include "vtkFRepObject.h"
+#include "vtkFRepPolygonizer.h"
+
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include "Language/parser.h"
+
+#include <fstream>
+#include <sstream>
+
+vtkStandardNewMacro(vtkHyperFunReader);
+
+//------------------------------------------------------------------------------
+vtkHyperFunReader::vtkHyperFunReader()
+{
+  this->SetNumberOfOutputPorts(2);
+  this->ObjectNames = vtkStringArray::New();
+  this->ObjectNames->SetName("ObjectNames");
+}
+
+//------------------------------------------------------------------------------
+vtkHyperFunReader::~vtkHyperFunReader()
+{
+  this->ObjectNames->Delete();
+}
+
+//------------------------------------------------------------------------------
+vtkStringArray* vtkHyperFunReader::GetObjectNames()
+{
+  return this->ObjectNames;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkHyperFunReader::GetGeometryOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunReader::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunReader::RequestDataObject(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (!this->Superclass::RequestDataObject(request, inInfo, outInfo))
+  {
+    return 0;
+  }
+  vtkInformation* info = outInfo->GetInformationObject(1);
+  if (!vtkPolyData::GetData(info))
+  {
+    vtkNew<vtkPolyData> geometry;
+    info->Set(vtkDataObject::DATA_OBJECT(), geometry);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHyperFunReader::ReadProgram(std::string& text, std::string& sourceName) const
+{
+  if (this->FileName && *this->FileName)
+  {
+    std::ifstream in(this->FileName, std::ios::binary);
+    if (!in)
+    {
+      return false;
+    }
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    sourceName = this->FileName;
+    return !in.bad();
+  }
+  if (this->ModelText)
+  {
+    text = this->ModelText;
+    sourceName = "<string>";
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunReader::RequestInformation(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (!this->Superclass::RequestInformation(request, inInfo, outInfo))
+  {
+    return 0;
+  }
+  // Port 1 is split into slabs by the polygoniser; port 0 is whole on every piece.
+  outInfo->GetInformationObject(1)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+
+  // The object names, by parsing only (diagnostics are reported once, by RequestData).
+  this->ObjectNames->Initialize();
+  std::string text;
+  std::string sourceName;
+  if (!this->ReadProgram(text, sourceName))
+  {
+    return 1;
+  }
+  const frep::ParseResult parsed = frep::parse_program(text, sourceName);
+  if (!parsed.ok() || parsed.program->objects.empty())
+  {
+    return 1;
+  }
+  const frep::ast::Program& program = *parsed.program;
+  const int first = frep::ast::select_object(program, "my_model");
+  if (first >= 0)
+  {
+    this->ObjectNames->InsertNextValue(program.objects[first].name);
+  }
+  for (int i = 0; i < static_cast<int>(program.objects.size()); ++i)
+  {
+    if (i != first)
+    {
+      this->ObjectNames->InsertNextValue(program.objects[i].name);
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkHyperFunReader::RequestData(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (!this->Superclass::RequestData(request, inInfo, outInfo))
+  {
+    return 0;
+  }
+  vtkInformation* geometryInfo = outInfo->GetInformationObject(1);
+  vtkPolyData* geometry = vtkPolyData::GetData(geometryInfo);
+  vtkFRepObject* object = vtkFRepObject::GetData(outInfo, 0);
+  if (!geometry)
+  {
+    vtkErrorMacro(<< "output port 1 is not a vtkPolyData");
+    return 0;
+  }
+  geometry->Initialize();
+  if (!this->GenerateGeometry || !object || !object->HasModel() || object->GetDimension() < 2)
+  {
+    return 1; // nothing to mesh (an error, if any, is reported already)
+  }
+
+  // The default cross-section: x1, x2, x3 free, every further coordinate at its midpoint.
+  vtkNew<vtkFRepObject> section;
+  section->ShallowCopy(object);
+  for (int i = 3; i < section->GetModelDimension(); ++i)
+  {
+    double range[2];
+    section->GetCoordinateRange(i, range);
+    section->FixCoordinate(i, 0.5 * (range[0] + range[1]));
+  }
+
+  vtkNew<vtkFRepPolygonizer> polygonizer;
+  polygonizer->SetInputData(section);
+  polygonizer->SetSampleDimensions(
+    this->GeometryResolution, this->GeometryResolution, this->GeometryResolution);
+  const int piece = geometryInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  const int pieces =
+    geometryInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  polygonizer->UpdatePiece(piece, pieces, 0);
+  geometry->ShallowCopy(polygonizer->GetOutput());
+  geometry->GetFieldData()->ShallowCopy(section->GetFieldData());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GenerateGeometry: " << (this->GenerateGeometry ? "On" : "Off") << "\n";
+  os << indent << "GeometryResolution: " << this->GeometryResolution << "\n";
+  os << indent << "ObjectNames: " << this->ObjectNames->GetNumberOfValues() << " names\n";
+}

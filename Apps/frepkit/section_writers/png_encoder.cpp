@@ -25,6 +25,9 @@ extern "C" __attribute__((visibility("default"))) int frepkit_encode_png(std::in
     OIIO::ImageSpec spec(
       static_cast<int>(width), static_cast<int>(height), 3, OIIO::TypeDesc::UINT8);
     spec.attribute("Software", "frepkit");
+    // zlib level 3 instead of 6: frames are large flat areas; 30% less encoding time
+    // for files 20% larger (48 demo frames: 4.8 -> 3.4 s of worker time, 3.2 -> 3.9 MB).
+    spec.attribute("png:compressionLevel", 3);
     if (!image->supports("ioproxy") || !image->set_ioproxy(&memory) ||
       !image->open("section.png", spec) || !image->write_image(OIIO::TypeDesc::UINT8, rgb) ||
       !image->close())

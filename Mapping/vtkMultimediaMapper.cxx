@@ -4,6 +4,7 @@
 
 #include "mapping_plan.h"
 #include "section_mesh.h"
+#include "tone_synthesis.h"
 
 #include "vtkFRepObject.h"
 
@@ -49,6 +50,10 @@ struct vtkMultimediaMapper::Internals
   vtkMTimeType LoadedAt = 0;
   int PoolRequest = -1;
   std::shared_ptr<frep::ThreadPool> Pool;
+  // The whole sound track of the plan's frames (synthesised once per plan, sliced per frame).
+  std::vector<float> Sound;
+  int SampleRate = 0;
+  double Fps = 0;
 };
 
 namespace
@@ -345,6 +350,31 @@ int vtkMultimediaMapper::RequestInformation(vtkInformation*,
   }
   in.Parameters = spec.parameters.empty() ? object->GetParameters() : spec.parameters;
   in.Valid = true;
+  in.Sound.clear();
+  in.SampleRate = spec.audio.sample_rate;
+  in.Fps = spec.animation.fps;
+  if (in.Plan.voice_count > 0 && !in.Plan.frames.empty())
+  {
+    frep::media::VoiceFrames voices;
+    for (const auto& f : in.Plan.frames)
+    {
+      std::vector<frep::media::VoiceParams> v;
+      for (const auto& voice : f.voices)
+      {
+        v.push_back({ voice.pitch, voice.loudness, voice.timbre });
+      }
+      voices.push_back(v);
+    }
+    frep::media::SynthesisResult sound = frep::media::synthesise(voices, in.Fps, in.SampleRate);
+    if (sound.ok())
+    {
+      in.Sound = std::move(sound.samples);
+    }
+    else
+    {
+      vtkWarningMacro(<< "sound track: " << sound.error << "; frames without AudioSamples");
+    }
+  }
 
   if (this->OutputMode == FRAME && !in.Plan.frames.empty())
   {
@@ -490,6 +520,22 @@ int vtkMultimediaMapper::RequestData(vtkInformation*,
     }
     vtkSmartPointer<vtkPolyData> poly = ToPolyData(section, *samples[i]);
     AddSampleFieldData(poly->GetFieldData(), *samples[i], names);
+    if (this->OutputMode == FRAME && !in.Sound.empty())
+    {
+      // The frame's share of the sound track: [k, k + 1) / fps.
+      const double t = samples[i]->time;
+      const std::size_t first =
+        std::min(in.Sound.size(), static_cast<std::size_t>(std::llround(t * in.SampleRate)));
+      const std::size_t last = std::min(in.Sound.size(),
+        static_cast<std::size_t>(std::llround((t + 1.0 / in.Fps) * in.SampleRate)));
+      auto audio = MakeArray<vtkFloatArray>("AudioSamples", 1);
+      audio->SetNumberOfTuples(static_cast<vtkIdType>(last - first));
+      std::copy(in.Sound.begin() + first, in.Sound.begin() + last, audio->GetPointer(0));
+      poly->GetFieldData()->AddArray(audio);
+      auto rate = MakeArray<vtkIntArray>("AudioSampleRate", 1);
+      rate->InsertNextValue(in.SampleRate);
+      poly->GetFieldData()->AddArray(rate);
+    }
     auto worldBounds = MakeArray<vtkDoubleArray>("WorldBounds", 6);
     const auto& wb = in.Plan.world_box;
     const double bounds[6] = { wb[0].lo, wb[0].hi, wb[1].lo, wb[1].hi, wb[2].lo, wb[2].hi };

@@ -18,8 +18,11 @@
  * "CoordinateValues" (per model coordinate, NaN for the world ones), "Label", "Colour" (RGB),
  * "Opacity", "Background", "LightIntensity", "Transform" (16, row-major), "WorldBounds" (6: the box
  * of every cell and frame), and the sound of the sample: "VoicePitch", "VoiceLoudness",
- * "VoiceTimbre" (one tuple per voice). The data set's metadata NAME is the label, e.g. "x4 = 0.25,
- * x5 = 0.5".
+ * "VoiceTimbre" (one tuple per voice) and, for a frame, "AudioSamples" (its 1/fps seconds of
+ * the mono sound track, floats in [-1, 1], the samples `frepkit map` writes to the WAV) with
+ * "AudioSampleRate". The data set's metadata NAME is the label, e.g. "x4 = 0.25, x5 = 0.5". The
+ * cross-section as an FRep object is the input with the cell's CoordinateValues fixed
+ * (vtkFRepSlice), which is how the mesh is made.
  *
  * Time: with OutputMode Frame and a mapping with dynamic coordinates, RequestInformation
  * publishes TIME_STEPS (frame k at k / fps) and TIME_RANGE, and RequestData meshes the frame of

@@ -15,6 +15,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -208,6 +209,15 @@ int TestMultimediaMapper(int, char*[])
     FREPKIT_CHECK(failures, pitch && std::abs(pitch->GetValue(0) - (220 + 220 * t / 2.0)) < 1e-6);
     FREPKIT_CHECK(
       failures, std::abs(frame->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) - t) < 1e-9);
+    // the frame's 1/5 s of the sound track at 44100 Hz, not silent
+    auto* audio = vtkFloatArray::SafeDownCast(poly->GetFieldData()->GetArray("AudioSamples"));
+    FREPKIT_CHECK(failures, audio && audio->GetNumberOfTuples() == 8820);
+    double energy = 0;
+    for (vtkIdType k = 0; audio && k < audio->GetNumberOfTuples(); ++k)
+    {
+      energy += audio->GetValue(k) * audio->GetValue(k);
+    }
+    FREPKIT_CHECK(failures, energy > 1.0);
   }
 
   // 3. A mapping that does not fit: x4 unmapped, a coordinate the model lacks.

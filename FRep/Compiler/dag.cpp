@@ -22,6 +22,8 @@ bool is_commutative(Opcode op)
     case Opcode::Mul:
     case Opcode::Union:
     case Opcode::Intersect:
+    case Opcode::UnionPlain:
+    case Opcode::IntersectPlain:
     case Opcode::Eq:
     case Opcode::Ne:
     case Opcode::And:
@@ -127,6 +129,7 @@ bool Dag::compute_never_negative(const Node& n) const
     case Opcode::Mul:
     case Opcode::Min:
     case Opcode::Union:
+    case Opcode::UnionPlain:
       return nn(n.a) && nn(n.b);
     case Opcode::Select:
       return nn(n.b) && nn(n.c);
@@ -250,8 +253,10 @@ NodeId Dag::unary(Opcode op, NodeId a)
 bool Dag::match_r_function(Opcode op, NodeId a, NodeId b, NodeId& result)
 {
   // Only the exact formula with the 0*u*v term is the R-function op: without it an infinite
-  // operand gives inf, not NaN. Every step below is bitwise commutative, so operand order
-  // inside the pattern does not matter (NaN payloads aside).
+  // operand gives inf, not NaN; that plain form (hfBlendUni/Int's) becomes UnionPlain /
+  // IntersectPlain, the same values, so the interval evaluator's monotone rule applies to both.
+  // Every step below is bitwise commutative, so operand order inside the pattern does not matter
+  // (NaN payloads aside).
   const Node& sum = nodes_[a];
   if (sum.op != Opcode::Add || nodes_[b].op != Opcode::Sqrt)
   {
@@ -267,6 +272,18 @@ bool Dag::match_r_function(Opcode op, NodeId a, NodeId b, NodeId& result)
     inner = nodes_[inner].a;
   }
   const Node& diff = nodes_[inner];
+  if (diff.op == Opcode::Add && inner == nodes_[b].a)
+  {
+    // (u + v) ± sqrt(u*u + v*v) without the 0*u*v term: hfBlendUni/Int's R-function part.
+    const Node& plain = diff;
+    if (nodes_[plain.a].op == Opcode::Square && nodes_[plain.b].op == Opcode::Square &&
+      same_pair(nodes_[plain.a].a, nodes_[plain.b].a, u, v))
+    {
+      result = binary(op == Opcode::Sub ? Opcode::IntersectPlain : Opcode::UnionPlain, u, v);
+      return true;
+    }
+    return false;
+  }
   if (diff.op != Opcode::Sub)
   {
     return false;
@@ -307,7 +324,7 @@ bool Dag::match_r_function(Opcode op, NodeId a, NodeId b, NodeId& result)
   };
   NodeId x = 0;
   const bool matched = (zero_times(outer.a, x) && same_pair(x, outer.b, u, v)) ||
-    (zero_times(outer.b, x) && same_pair(x, outer.a, u, v));
+                       (zero_times(outer.b, x) && same_pair(x, outer.a, u, v));
   if (!matched)
   {
     return false;

@@ -90,6 +90,10 @@ namespace frep::semantics
       return unite(a, b);
     case Opcode::Intersect:
       return intersect(a, b);
+    case Opcode::UnionPlain:
+      return unite_plain(a, b);
+    case Opcode::IntersectPlain:
+      return intersect_plain(a, b);
     case Opcode::Eq:
       return std::fabs(a - b) < kEps ? 1.0 : 0.0;
     case Opcode::Ne:

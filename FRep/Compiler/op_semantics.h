@@ -46,6 +46,19 @@ inline double unite(double l, double r)
   return 1.0 * (l + r + std::sqrt(std::fabs(l * l + r * r - 0.0 * r * l)));
 }
 
+/// The union part of hfBlendUni, (l + r) + sqrt(l*l + r*r), exactly as the library writes it
+/// (no fabs, no 0*r*l term): equal to unite() bit for bit for finite operands.
+inline double unite_plain(double l, double r)
+{
+  return (l + r) + std::sqrt(l * l + r * r);
+}
+
+/// The intersection part of hfBlendInt, (l + r) - sqrt(l*l + r*r).
+inline double intersect_plain(double l, double r)
+{
+  return (l + r) - std::sqrt(l * l + r * r);
+}
+
 /// Error cases of b ^ e (value part in hf_pow).
 enum class PowError
 {

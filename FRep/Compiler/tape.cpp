@@ -84,6 +84,10 @@ const char* opcode_name(Opcode op)
       return "union";
     case Opcode::Intersect:
       return "intersect";
+    case Opcode::UnionPlain:
+      return "union_plain";
+    case Opcode::IntersectPlain:
+      return "intersect_plain";
     case Opcode::Eq:
       return "eq";
     case Opcode::Ne:
@@ -147,6 +151,8 @@ int operand_count(Opcode op)
     case Opcode::Min:
     case Opcode::Union:
     case Opcode::Intersect:
+    case Opcode::UnionPlain:
+    case Opcode::IntersectPlain:
     case Opcode::Eq:
     case Opcode::Ne:
     case Opcode::Lt:

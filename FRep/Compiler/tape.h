@@ -47,6 +47,11 @@ enum class Opcode : std::uint8_t
   Max, Min,  ///< as the original's builtins compute them
   Union,     ///< a + b + sqrt(a*a + b*b)
   Intersect, ///< a + b - sqrt(a*a + b*b)   (a \ b = Intersect(a, -b) bit for bit)
+  /// (a + b) ± sqrt(a*a + b*b) as hfBlendUni/hfBlendInt write it: without the R-functions'
+  /// 0*a*b term, so an infinite operand gives inf (or NaN) as written, not always NaN. Its own
+  /// opcode so the interval evaluator can use the monotone rule (the expanded sqrt is loose).
+  UnionPlain,
+  IntersectPlain,
 
   // comparisons and logic (results 1.0 / 0.0)
   Eq, Ne,         ///< |a - b| < 1e-6 ; |a - b| >= 1e-6

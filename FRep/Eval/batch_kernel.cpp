@@ -298,6 +298,12 @@ FREP_ALWAYS_INLINE void run_block_body(
       case Opcode::Intersect:
         FREP_BINARY(hf::intersect(l, r))
         break;
+      case Opcode::UnionPlain:
+        FREP_BINARY(hf::unite_plain(l, r))
+        break;
+      case Opcode::IntersectPlain:
+        FREP_BINARY(hf::intersect_plain(l, r))
+        break;
       case Opcode::Eq:
         FREP_LANES o[i] = std::fabs(x[i] - y[i]) < hf::kEps ? 1.0 : 0.0;
         break;

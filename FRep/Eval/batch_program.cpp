@@ -17,6 +17,8 @@ bool takes_immediate(Opcode op)
     case Opcode::Min:
     case Opcode::Union:
     case Opcode::Intersect:
+    case Opcode::UnionPlain:
+    case Opcode::IntersectPlain:
     case Opcode::Lt:
     case Opcode::Le:
     case Opcode::Gt:

@@ -292,11 +292,13 @@ double GradientEvaluator::evaluate(std::span<const double> inputs, std::span<dou
         break;
       case Opcode::Union:
       case Opcode::Intersect:
+      case Opcode::UnionPlain:
+      case Opcode::IntersectPlain:
       {
         // d/dl (l + r ± sqrt(l² + r²)) = 1 ± l / sqrt(l² + r²); at the origin, where it is not
         // differentiable, the square-root term is left out.
         const double s = std::sqrt(a * a + b * b);
-        const double sign = op == Opcode::Union ? 1.0 : -1.0;
+        const double sign = op == Opcode::Union || op == Opcode::UnionPlain ? 1.0 : -1.0;
         ca = s > 0 ? 1 + sign * a / s : 1.0;
         cb = s > 0 ? 1 + sign * b / s : 1.0;
         break;

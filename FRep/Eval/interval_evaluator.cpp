@@ -531,7 +531,7 @@ Range max_min(const Range& a, const Range& b, bool is_max)
 /// the operands' magnitude (cancellation), so the margin is absolute: 8 DBL_EPSILON (|l|+|r|),
 /// plus 2^-500 for squares that underflow. Huge operands overflow l² (and infinite ones give
 /// NaN through the 0*r*l term), so they get no rule.
-Range r_function(const Range& a, const Range& b, bool is_union)
+Range r_function(const Range& a, const Range& b, bool is_union, bool plain = false)
 {
   const double kHuge = 0x1p500;
   const double m =
@@ -540,7 +540,10 @@ Range r_function(const Range& a, const Range& b, bool is_union)
   {
     return whole(true);
   }
-  const auto f = is_union ? hf::unite : hf::intersect;
+  // The plain forms (hfBlendUni/Int's) are the same functions for finite operands, the only
+  // ones that get this rule.
+  const auto f = plain ? (is_union ? hf::unite_plain : hf::intersect_plain)
+                       : (is_union ? hf::unite : hf::intersect);
   const double pad = 8 * DBL_EPSILON * m + 0x1p-500;
   return { { down(f(a.v.lo, b.v.lo) - pad), up(f(a.v.hi, b.v.hi) + pad) }, a.nan || b.nan };
 }
@@ -759,6 +762,12 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
         break;
       case Opcode::Intersect:
         r = r_function(a, b, false);
+        break;
+      case Opcode::UnionPlain:
+        r = r_function(a, b, true, true);
+        break;
+      case Opcode::IntersectPlain:
+        r = r_function(a, b, false, true);
         break;
       case Opcode::Eq:
       case Opcode::Ne:

@@ -3,6 +3,7 @@
 #include "Compiler/expr.h"
 #include "Compiler/model.h"
 #include "Eval/interpreter.h"
+#include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
 #include "Language/parser.h"
 
@@ -455,8 +456,8 @@ namespace
 
 std::size_t count_op(const Tape& tape, Opcode op)
 {
-  return static_cast<std::size_t>(std::count_if(tape.code.begin(), tape.code.end(),
-    [op](const Instruction& ins) { return ins.op == op; }));
+  return static_cast<std::size_t>(std::count_if(
+    tape.code.begin(), tape.code.end(), [op](const Instruction& ins) { return ins.op == op; }));
 }
 
 TEST(CompilerDag, RecognisesTheWrittenOutRFunctionOfHfBlock)
@@ -487,11 +488,71 @@ TEST(CompilerDag, KeepsAnRFunctionWrittenWithoutTheAlphaTerm)
 {
   // u + v - sqrt(u*u + v*v) differs from the original's & for infinite operands (inf, not NaN):
   // it must stay as written.
-  auto model = compile_text(
-    "my_model(x[2], a[1]) { my_model = x[1] + x[2] - sqrt(x[1]*x[1] + x[2]*x[2]); }");
+  auto model =
+    compile_text("my_model(x[2], a[1]) { my_model = x[1] + x[2] - sqrt(x[1]*x[1] + x[2]*x[2]); }");
   ASSERT_TRUE(model);
   auto tape = model->tape();
   EXPECT_EQ(count_op(*tape, Opcode::Intersect), 0u) << tape->dump();
+  // ... as its own opcode, the plain form, whose values are those of the formula.
+  EXPECT_EQ(count_op(*tape, Opcode::IntersectPlain), 1u) << tape->dump();
+  PointEvaluator pe(tape);
+  Interpreter in(model->program(), model->object_index());
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const std::vector<double>& p : std::vector<std::vector<double>>{
+         { 0, 0 }, { 0.5, -1 }, { -7, 1e300 }, { inf, 0 }, { -inf, 2 }, { inf, inf } })
+  {
+    const double expected = in.evaluate(p).value;
+    const double got = pe.value(p);
+    EXPECT_TRUE(same_bits(got, expected) || (std::isnan(got) && std::isnan(expected)))
+      << p[0] << " " << p[1] << ": " << got << " vs " << expected;
+  }
+}
+
+TEST(CompilerDag, HfBlendUniAndIntGetThePlainRFunctionOpcodes)
+{
+  // hfBlendUni/Int(f1, f2, a0, a1, a2) = f1 + f2 +/- sqrt(f1^2 + f2^2) + a0 / (...): the
+  // R-function part becomes UnionPlain/IntersectPlain (so the interval evaluator can use the
+  // monotone rule), the values stay the library's bit for bit, infinite operands included.
+  auto model = compile_text("my_model(x[2], a[1]) {\n"
+                            "  u = hfBlendUni(x[1], x[2], 0.25, 0.5, 0.5);\n"
+                            "  my_model = hfBlendInt(u, 1 - x[1], 0.1, 1, 2); }");
+  ASSERT_TRUE(model);
+  auto tape = model->tape();
+  EXPECT_EQ(count_op(*tape, Opcode::UnionPlain), 1u) << tape->dump();
+  EXPECT_EQ(count_op(*tape, Opcode::IntersectPlain), 1u) << tape->dump();
+  PointEvaluator pe(tape);
+  Interpreter in(model->program(), model->object_index());
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const std::vector<double>& p : std::vector<std::vector<double>>{ { 0, 0 },
+         { 0.5, -1 },
+         { 3, 1e300 },
+         { inf, 0 },
+         { -inf, 2 },
+         { 1e-320, -3 },
+         { -2.5, 7.25 } })
+  {
+    const double expected = in.evaluate(p).value;
+    const double got = pe.value(p);
+    EXPECT_TRUE(same_bits(got, expected) || (std::isnan(got) && std::isnan(expected)))
+      << p[0] << " " << p[1] << ": " << got << " vs " << expected;
+  }
+}
+
+TEST(CompilerDag, BlendsAreCulledFarFromTheSurface)
+{
+  // Two balls blended: in a box outside both (0.5 to 1.5 away from the small one), the interval
+  // enclosure must be negative. Naive interval arithmetic on the expanded f1 + f2 +
+  // sqrt(f1^2 + f2^2) gives about [-3.0, 1.3] there (the dependency problem), so a mesher could
+  // not cull around blends; the monotone rule gives hi of about -0.4.
+  auto model = compile_text("my_model(x[3], a[1]) {\n"
+                            "  b1 = 2 - sqrt(x[1]^2 + x[2]^2 + x[3]^2);\n"
+                            "  b2 = 1 - sqrt((x[1] - 2)^2 + x[2]^2 + x[3]^2);\n"
+                            "  my_model = hfBlendUni(b1, b2, 0.25, 0.5, 0.5); }");
+  ASSERT_TRUE(model);
+  IntervalEvaluator interval(model->tape());
+  const Interval far[] = { { 3.5, 4.5 }, { 0, 1 }, { 0, 1 } };
+  const IntervalResult r = interval.evaluate(far);
+  EXPECT_LT(r.value.hi, 0.0) << "[" << r.value.lo << ", " << r.value.hi << "]";
 }
 
 } // namespace
@@ -520,7 +581,8 @@ TEST(CompilerModel, LongFlatChainsParseCompileAndEvaluate)
   Interpreter in(model->program(), model->object_index());
   const std::vector<double> p{ 0.25, 0.5, 0.75 };
   const double expected = in.evaluate(p).value;
-  EXPECT_TRUE(same_bits(pe.value(p), expected) || (std::isnan(expected) && std::isnan(pe.value(p))));
+  EXPECT_TRUE(
+    same_bits(pe.value(p), expected) || (std::isnan(expected) && std::isnan(pe.value(p))));
 }
 
 } // namespace

@@ -102,6 +102,8 @@ inline const std::vector<OpInfo>& value_ops()
     { Opcode::Min, 2, "Min" },
     { Opcode::Union, 2, "Union" },
     { Opcode::Intersect, 2, "Intersect" },
+    { Opcode::UnionPlain, 2, "UnionPlain" },
+    { Opcode::IntersectPlain, 2, "IntersectPlain" },
     { Opcode::Eq, 2, "Eq" },
     { Opcode::Ne, 2, "Ne" },
     { Opcode::Lt, 2, "Lt" },
@@ -207,6 +209,10 @@ inline double reference(Opcode op, double a, double b, double c, int index = 0)
       return hf::unite(a, b);
     case Opcode::Intersect:
       return hf::intersect(a, b);
+    case Opcode::UnionPlain: // written out here, independently of op_semantics.h
+      return (a + b) + std::sqrt(a * a + b * b);
+    case Opcode::IntersectPlain:
+      return (a + b) - std::sqrt(a * a + b * b);
     case Opcode::Eq:
       return std::fabs(a - b) < 1e-6 ? 1 : 0;
     case Opcode::Ne:

@@ -1,0 +1,47 @@
+// Parsing and compiling a model's text: what the editor's debounced, background analysis
+// produces. Pure engine code (no Qt widgets), safe to run on any thread.
+#pragma once
+
+#include "CoordinateRanges.h"
+
+#include "Compiler/model.h"
+#include "Language/ast.h"
+#include "Language/diagnostic.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace frepstudio
+{
+
+struct ObjectSummary
+{
+  std::string name; ///< lower-case, as the language stores it
+  int x_dim = 0;
+  int a_dim = 0;
+  int s_dim = 1;
+  std::shared_ptr<const frep::Model> model; ///< null when it did not compile
+};
+
+struct ModelAnalysis
+{
+  std::uint64_t generation = 0; ///< which request this answers (newer ones win)
+  std::string file_name;        ///< as used in the diagnostics
+  std::shared_ptr<const frep::ast::Program> program;
+  /// Parse errors, else compile errors of any object, each file:line:col.
+  std::vector<frep::Diagnostic> diagnostics;
+  std::vector<ObjectSummary> objects;
+  int default_object = -1; ///< `my_model`, else the first object (the original's rule)
+  CoordinateRanges ranges;
+  double seconds = 0; ///< parse + compile time
+
+  bool ok() const { return program != nullptr && diagnostics.empty(); }
+};
+
+/// Parses `text` and compiles every object.
+ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
+  std::uint64_t generation);
+
+} // namespace frepstudio

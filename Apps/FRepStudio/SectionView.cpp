@@ -1,0 +1,159 @@
+#include "SectionView.h"
+
+#include <QImage>
+#include <QVBoxLayout>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCubeAxesActor.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkOutlineSource.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTextProperty.h>
+
+#include <cstring>
+
+namespace frepstudio
+{
+
+SectionView::SectionView(QWidget* parent)
+  : QWidget(parent)
+{
+  widget_ = new QVTKOpenGLNativeWidget(this);
+  // No multisampling: under Mesa's llvmpipe (Xvfb, remote desktops) an MSAA framebuffer
+  // multiplies the cost of every frame, and interactive re-meshing renders often.
+  window_->SetMultiSamples(0);
+  widget_->setRenderWindow(window_);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(widget_);
+
+  renderer_->SetBackground(0.16, 0.17, 0.20);
+  renderer_->SetBackground2(0.42, 0.45, 0.52);
+  renderer_->GradientBackgroundOn();
+  window_->AddRenderer(renderer_);
+
+  // hfp's default face colour (50, 200, 80), used when the model has no s[] colours.
+  actor_->GetProperty()->SetColor(50 / 255.0, 200 / 255.0, 80 / 255.0);
+  actor_->GetProperty()->SetSpecular(0.3);
+  actor_->GetProperty()->SetSpecularPower(30);
+  actor_->GetProperty()->SetLineWidth(2);
+  mapper_->ScalarVisibilityOff();
+  actor_->SetMapper(mapper_);
+  actor_->VisibilityOff();
+  renderer_->AddActor(actor_);
+
+  outline_mapper_->SetInputConnection(outline_->GetOutputPort());
+  outline_actor_->SetMapper(outline_mapper_);
+  outline_actor_->GetProperty()->SetColor(0.85, 0.85, 0.85);
+  renderer_->AddActor(outline_actor_);
+
+  axes_->SetCamera(renderer_->GetActiveCamera());
+  axes_->SetXTitle("x1");
+  axes_->SetYTitle("x2");
+  axes_->SetZTitle("x3");
+  axes_->SetFlyModeToOuterEdges();
+  axes_->SetGridLineLocation(vtkCubeAxesActor::VTK_GRID_LINES_FURTHEST);
+  for (int i = 0; i < 3; ++i)
+  {
+    axes_->GetTitleTextProperty(i)->SetColor(0.9, 0.9, 0.9);
+    axes_->GetLabelTextProperty(i)->SetColor(0.9, 0.9, 0.9);
+  }
+  axes_->GetXAxesLinesProperty()->SetColor(0.8, 0.8, 0.8);
+  axes_->GetYAxesLinesProperty()->SetColor(0.8, 0.8, 0.8);
+  axes_->GetZAxesLinesProperty()->SetColor(0.8, 0.8, 0.8);
+  renderer_->AddActor(axes_);
+
+  const double bounds[6] = { -10, 10, -10, 10, -10, 10 };
+  outline_->SetBounds(bounds);
+  axes_->SetBounds(bounds);
+  resetCamera(bounds);
+
+  // frameSwapped is when a frame is really on screen (QVTKOpenGLNativeWidget renders in
+  // paintGL, later than our Render() calls): what the interactive timings must measure.
+  connect(widget_, &QOpenGLWidget::frameSwapped, this, &SectionView::frameRendered);
+}
+
+SectionView::~SectionView() = default;
+void SectionView::setSection(vtkPolyData* poly_data, const std::array<double, 3>& lo,
+  const std::array<double, 3>& hi, bool reset_camera)
+{
+  shown_ = poly_data;
+  mapper_->SetInputData(poly_data);
+  vtkDataArray* scalars = poly_data ? poly_data->GetPointData()->GetScalars() : nullptr;
+  if (scalars && std::strcmp(scalars->GetName() ? scalars->GetName() : "", "Colors") == 0)
+  {
+    mapper_->ScalarVisibilityOn();
+    mapper_->SetColorModeToDirectScalars();
+  }
+  else if (scalars)
+  {
+    mapper_->ScalarVisibilityOn();
+    mapper_->SetColorModeToMapScalars();
+    double range[2];
+    scalars->GetRange(range);
+    mapper_->SetScalarRange(range[0], range[1] > range[0] ? range[1] : range[0] + 1);
+  }
+  else
+  {
+    mapper_->ScalarVisibilityOff();
+  }
+  actor_->SetVisibility(poly_data != nullptr);
+
+  const double bounds[6] = { lo[0], hi[0], lo[1], hi[1], lo[2], hi[2] };
+  outline_->SetBounds(bounds);
+  axes_->SetBounds(bounds);
+  if (reset_camera)
+    resetCamera(bounds);
+  renderer_->ResetCameraClippingRange(bounds);
+  // Outside paintGL this only asks QVTKOpenGLNativeWidget for a VTK render in its next paintGL
+  // (a plain update() would only re-show the cached frame).
+  window_->Render();
+}
+
+void SectionView::resetCamera(const double bounds[6])
+{
+  // From +x +y +z, y up: the HyperFun models (and hfp's views) have y as their vertical.
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(1, 0.8, 2.2);
+  camera->SetViewUp(0, 1, 0);
+  // Zoom() scales the view angle: set it first, so every reset gives the same view.
+  camera->SetViewAngle(30);
+  renderer_->ResetCamera(bounds);
+  camera->Zoom(0.95);
+}
+
+void SectionView::clearSection()
+{
+  shown_ = nullptr;
+  mapper_->SetInputData(nullptr);
+  actor_->VisibilityOff();
+  window_->Render();
+}
+
+long long SectionView::cellCount() const
+{
+  return shown_ ? static_cast<long long>(shown_->GetNumberOfCells()) : 0;
+}
+
+QImage SectionView::renderToImage()
+{
+  // QOpenGLWidget::grabFramebuffer() runs paintGL (VTK renders, ready for it there, unlike a
+  // vtkWindowToImageFilter read-back outside paintGL) and reads the widget's framebuffer, so a
+  // screenshot never depends on how the platform composites OpenGL widgets into
+  // QWidget::grab().
+  return widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
+}
+
+vtkGenericOpenGLRenderWindow* SectionView::renderWindow() const
+{
+  return window_;
+}
+
+} // namespace frepstudio

@@ -1,0 +1,223 @@
+#include "SpreadsheetPanel.h"
+
+#include "Eval/thread_pool.h"
+
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace frepstudio
+{
+
+SpreadsheetPanel::SpreadsheetPanel(QWidget* parent)
+  : QWidget(parent)
+  , engine_pool_(std::make_shared<frep::ThreadPool>(0))
+{
+  jobs_.setMaxThreadCount(1);
+  auto* layout = new QVBoxLayout(this);
+  auto* controls = new QHBoxLayout;
+  controls->addWidget(new QLabel(tr("Rows:"), this));
+  rows_ = new QComboBox(this);
+  rows_->setObjectName("spreadsheetRows");
+  controls->addWidget(rows_);
+  controls->addWidget(new QLabel(tr("Columns:"), this));
+  columns_ = new QComboBox(this);
+  columns_->setObjectName("spreadsheetColumns");
+  controls->addWidget(columns_);
+  controls->addWidget(new QLabel(tr("Steps:"), this));
+  steps_ = new QSpinBox(this);
+  steps_->setObjectName("spreadsheetSteps");
+  steps_->setRange(2, 9);
+  steps_->setValue(5); // the paper's 5 x 5: x4, x5 in 0, 0.25 ... 1
+  controls->addWidget(steps_);
+  controls->addStretch(1);
+  layout->addLayout(controls);
+  status_ = new QLabel(this);
+  layout->addWidget(status_);
+
+  auto* scroll = new QScrollArea(this);
+  grid_widget_ = new QWidget(scroll);
+  grid_ = new QGridLayout(grid_widget_);
+  grid_->setSpacing(2);
+  scroll->setWidget(grid_widget_);
+  scroll->setWidgetResizable(true);
+  layout->addWidget(scroll, 1);
+
+  connect(rows_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
+  connect(columns_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
+  connect(steps_, qOverload<int>(&QSpinBox::valueChanged), this, [this] { rebuild(); });
+}
+
+SpreadsheetPanel::~SpreadsheetPanel()
+{
+  generation_.fetch_add(1);
+  jobs_.waitForDone();
+}
+
+int SpreadsheetPanel::steps() const
+{
+  return steps_->value();
+}
+
+void SpreadsheetPanel::setSteps(int steps)
+{
+  steps_->setValue(steps);
+}
+
+int SpreadsheetPanel::rowCoordinate() const
+{
+  return rows_->currentData().isValid() ? rows_->currentData().toInt() : -1;
+}
+
+int SpreadsheetPanel::columnCoordinate() const
+{
+  return columns_->currentData().isValid() ? columns_->currentData().toInt() : -1;
+}
+
+QToolButton* SpreadsheetPanel::cell(int row, int column) const
+{
+  const int columns = columnCoordinate() >= 0 ? steps() : 1;
+  const int index = row * columns + column;
+  return index >= 0 && index < static_cast<int>(cells_.size()) ? cells_[index] : nullptr;
+}
+
+void SpreadsheetPanel::updateAxisChoices()
+{
+  const int extra = static_cast<int>(sheet_.extra_ranges.size());
+  if (rows_->count() == std::max(extra, 0) && columns_->count() == extra + 1)
+    return; // same coordinates: keep the user's choice
+  QSignalBlocker block_rows(rows_);
+  QSignalBlocker block_columns(columns_);
+  rows_->clear();
+  columns_->clear();
+  columns_->addItem(tr("(none)"));
+  for (int k = 0; k < extra; ++k)
+  {
+    const QString name = QString("x%1").arg(k + 4);
+    rows_->addItem(name, k);
+    columns_->addItem(name, k);
+  }
+  // Default: rows x5, columns x4 when there are two (the paper's layout), else rows x4.
+  rows_->setCurrentIndex(extra >= 2 ? 1 : 0);
+  columns_->setCurrentIndex(extra >= 2 ? 1 : 0);
+}
+
+bool SpreadsheetPanel::sameGrid(const Sheet& sheet) const
+{
+  if (!has_sheet_ || sheet.base.model != sheet_.base.model ||
+    sheet.base.parameters != sheet_.base.parameters || sheet.base.lo != sheet_.base.lo ||
+    sheet.base.hi != sheet_.base.hi || sheet.extra_ranges != sheet_.extra_ranges ||
+    sheet.base.fixed_values.size() != sheet_.base.fixed_values.size())
+    return false;
+  for (int k = 0; k < static_cast<int>(sheet.base.fixed_values.size()); ++k)
+    if (k != rowCoordinate() && k != columnCoordinate() &&
+      sheet.base.fixed_values[k] != sheet_.base.fixed_values[k])
+      return false;
+  return true;
+}
+
+void SpreadsheetPanel::setSheet(const Sheet& sheet)
+{
+  const bool same = sameGrid(sheet);
+  sheet_ = sheet;
+  has_sheet_ = true;
+  updateAxisChoices();
+  if (same)
+    return;
+  cells_empty_pending_ = true;
+  if (isVisible())
+    rebuild();
+}
+
+void SpreadsheetPanel::showEvent(QShowEvent* event)
+{
+  QWidget::showEvent(event);
+  if (has_sheet_ && (cells_.empty() || cells_empty_pending_))
+    rebuild();
+}
+
+void SpreadsheetPanel::rebuild()
+{
+  const std::uint64_t generation = generation_.fetch_add(1) + 1;
+  cells_empty_pending_ = false;
+  cells_.clear(); // the buttons are the grid's: deleted with its items below
+  finished_ = 0;
+  while (QLayoutItem* item = grid_->takeAt(0))
+  {
+    delete item->widget();
+    delete item;
+  }
+  const int row_axis = rowCoordinate();
+  const int column_axis = columnCoordinate();
+  if (!has_sheet_ || !sheet_.base.model || row_axis < 0)
+  {
+    status_->setText(tr("The spreadsheet needs a model with a coordinate beyond x1..x3."));
+    return;
+  }
+  const int n = steps();
+  const int columns = column_axis >= 0 ? n : 1;
+  auto value_of = [this](int axis, int step, int n) {
+    const auto range = sheet_.extra_ranges[axis];
+    return range[0] + (range[1] - range[0]) * step / (n - 1);
+  };
+  // Column headers along the top, row headers on the left.
+  for (int c = 0; c < columns && column_axis >= 0; ++c)
+    grid_->addWidget(new QLabel(QString("x%1 = %2").arg(column_axis + 4).arg(
+                                  value_of(column_axis, c, n)), grid_widget_),
+      0, c + 1, Qt::AlignCenter);
+  std::vector<CellRequest> requests;
+  for (int r = 0; r < n; ++r)
+  {
+    grid_->addWidget(new QLabel(QString("x%1 = %2").arg(row_axis + 4).arg(
+                                  value_of(row_axis, r, n)), grid_widget_),
+      r + 1, 0, Qt::AlignRight | Qt::AlignVCenter);
+    for (int c = 0; c < columns; ++c)
+    {
+      CellRequest request = sheet_.base;
+      std::map<std::string, double> values;
+      request.fixed_values[row_axis] = value_of(row_axis, r, n);
+      values["x" + std::to_string(row_axis + 4)] = request.fixed_values[row_axis];
+      if (column_axis >= 0)
+      {
+        request.fixed_values[column_axis] = value_of(column_axis, c, n);
+        values["x" + std::to_string(column_axis + 4)] = request.fixed_values[column_axis];
+      }
+      auto* button = new QToolButton(grid_widget_);
+      button->setFixedSize(request.pixels + 8, request.pixels + 8);
+      button->setIconSize(QSize(request.pixels, request.pixels));
+      button->setToolTip(tr("Click: move the sliders here"));
+      connect(button, &QToolButton::clicked, this, [this, values] { emit cellActivated(values); });
+      grid_->addWidget(button, r + 1, c + 1);
+      cells_.push_back(button);
+      requests.push_back(std::move(request));
+    }
+  }
+  status_->setText(tr("Computing %1 cells...").arg(requests.size()));
+
+  // One job for the whole grid, cell by cell in reading order; each finished cell is posted to
+  // the UI thread, where it is dropped if a newer grid has replaced this one meanwhile.
+  jobs_.start([this, generation, requests = std::move(requests)] {
+    auto keep_going = [this, generation] { return generation_.load() == generation; };
+    for (std::size_t i = 0; i < requests.size() && keep_going(); ++i)
+    {
+      QImage picture = render_cell(requests[i], engine_pool_, keep_going);
+      QMetaObject::invokeMethod(this, [this, generation, i, picture] {
+        if (generation_.load() != generation || i >= cells_.size())
+          return;
+        cells_[i]->setIcon(QPixmap::fromImage(picture));
+        ++finished_;
+        status_->setText(finished_ == static_cast<int>(cells_.size())
+            ? tr("%1 cells. Click one to move the sliders there.").arg(finished_)
+            : tr("Computing: %1 of %2 cells").arg(finished_).arg(cells_.size()));
+      }, Qt::QueuedConnection);
+    }
+  });
+}
+
+} // namespace frepstudio

@@ -1,0 +1,41 @@
+// One cell of the spreadsheet of cross-sections: the section of a model at given fixed values,
+// meshed by the engine and drawn by the headless software renderer (Mapping/Render), so cells
+// are made on a worker thread without touching OpenGL.
+#pragma once
+
+#include "Compiler/model.h"
+
+#include <QImage>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace frep
+{
+class ThreadPool;
+}
+
+namespace frepstudio
+{
+
+struct CellRequest
+{
+  std::shared_ptr<const frep::Model> model;
+  int s_dim = 1;
+  std::vector<double> parameters;
+  std::vector<double> fixed_values; ///< x4..xn for this cell
+  std::array<double, 3> lo{ -10, -10, -10 };
+  std::array<double, 3> hi{ 10, 10, 10 };
+  int resolution = 40; ///< samples per axis
+  int pixels = 160;    ///< the picture is pixels x pixels
+};
+
+/// Meshes and draws one cell; an empty picture when cancelled (`keep_going` returned false) or
+/// when the model cannot be cut (x_dim < 3). The camera matches the 3-D view's default one
+/// (y up, looking from +x +y +z), fitted to the box, so every cell is framed alike.
+QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::ThreadPool>& pool,
+  const std::function<bool()>& keep_going);
+
+} // namespace frepstudio

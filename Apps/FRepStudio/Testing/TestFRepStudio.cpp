@@ -1,0 +1,534 @@
+// FRepStudio under QTest (run by ctest under xvfb-run, QT_QPA_PLATFORM=xcb): screenshots against a
+// baseline, the error list, typing into the editor, progressive and cancelled meshing, the
+// object picker, and open/close cycles.
+#include "CoordinatePanel.h"
+#include "CoordinateRanges.h"
+#include "ErrorListWidget.h"
+#include "ImageComparison.h"
+#include "MappingEditor.h"
+#include "PathPanel.h"
+#include "ScreenshotCapture.h"
+#include "SectionView.h"
+#include "SpreadsheetPanel.h"
+#include "StudioMainWindow.h"
+
+#include "Language/parser.h"
+#include "Mesh/surface.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QTableWidget>
+#include <QTimer>
+#include <QToolButton>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <memory>
+
+using namespace frepstudio;
+
+namespace
+{
+
+const QString kMeta5D = QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/homotopic/meta5d.hf");
+const QString kData = QStringLiteral(FREPSTUDIO_TEST_DATA);
+const QSize kShotSize(1024, 700);
+constexpr int kSettleMs = 120000;
+
+/// Compares `image` with Data/Baseline/NAME.png; the picture is always written next to the test
+/// binary (as ACTUAL.png), to inspect a failure or to become the new baseline.
+void expectBaseline(const QImage& image, const QString& name, const QString& actual_name)
+{
+  const QString baseline = kData + "/Baseline/" + name + ".png";
+  const QString actual = QStringLiteral(FREPSTUDIO_TEST_OUTPUT) + "/" + actual_name + ".png";
+  QVERIFY(image.save(actual));
+  const QImage expected(baseline);
+  QVERIFY2(!expected.isNull(),
+    qPrintable(QString("no baseline %1; this run's picture is %2").arg(baseline, actual)));
+  const testing::ImageDifference difference = testing::compare_images(image, expected);
+  QVERIFY2(difference.same_size, qPrintable(QString("size %1x%2, baseline %3x%4 (%5)")
+                                              .arg(image.width())
+                                              .arg(image.height())
+                                              .arg(expected.width())
+                                              .arg(expected.height())
+                                              .arg(actual)));
+  // Limits: two runs differ only in the status bar's timing text (mean 0.02, 0.013% of the
+  // pixels); moving x4 by 0.05 gives mean 0.14 and 0.14% of the pixels.
+  QVERIFY2(difference.mean < 0.06 && difference.changed_pixels < 0.0005,
+    qPrintable(QString("mean difference %1 (limit 0.06), changed pixels %2 (limit 0.0005): %3")
+                 .arg(difference.mean)
+                 .arg(difference.changed_pixels)
+                 .arg(actual)));
+}
+
+std::unique_ptr<StudioMainWindow> shownWindow()
+{
+  auto window = std::make_unique<StudioMainWindow>();
+  window->resize(kShotSize);
+  window->show();
+  if (!QTest::qWaitForWindowExposed(window.get()))
+    return nullptr;
+  return window;
+}
+
+/// The reference: the same section meshed directly by the engine.
+std::size_t engineTriangles(const QString& file, const char* object,
+  std::vector<std::optional<double>> fixed, int n)
+{
+  QFile in(file);
+  if (!in.open(QIODevice::ReadOnly))
+    return 0;
+  const auto parsed = frep::parse_program(in.readAll().toStdString(), "m.hf");
+  const int index = frep::ast::select_object(*parsed.program, object);
+  const auto model = frep::Model::compile(parsed.program, index).model;
+  frep::Specialisation specialisation;
+  specialisation.fixed = std::move(fixed);
+  frep::mesh::Grid grid;
+  grid.samples = { n, n, n };
+  return frep::mesh::extract_surface(model->specialise(specialisation), grid)
+    .surface.cell_count();
+}
+
+} // namespace
+
+class TestFRepStudio : public QObject
+{
+  Q_OBJECT
+private slots:
+  void coordinateRangesFromFile();
+  void screenshotCommandMatchesBaseline();
+  void sliderScreenshotMatchesBaseline();
+  void errorListShowsFileLineColumn();
+  void typingUpdatesView();
+  void coarseThenRefinedAndCancelled();
+  void objectPickerAndParameters();
+  void attributesColourTheSection();
+  void spreadsheetCellMovesSliders();
+  void mappingEditorRoundTrip();
+  void pathScrubAndPlay();
+  void openCloseCycles();
+};
+
+void TestFRepStudio::coordinateRangesFromFile()
+{
+  const CoordinateRanges ranges = CoordinateRanges::from_model_text(
+    "-- frepstudio: x4 = [0, 2]\n--frepstudio: x1=[-4,4.5]\n-- frepstudio: x5 = [3, 1]\n");
+  QCOMPARE(ranges.range(3)[1], 2.0);
+  QCOMPARE(ranges.range(0)[0], -4.0);
+  QCOMPARE(ranges.range(0)[1], 4.5);
+  QVERIFY(!ranges.is_from_file(4)); // lo > hi is ignored
+  QCOMPARE(ranges.range(4)[0], 0.0);
+  QCOMPARE(ranges.range(4)[1], 1.0);
+  QCOMPARE(ranges.range(2)[0], -10.0);
+
+  auto window = shownWindow();
+  QVERIFY(window);
+  window->setModelText("-- frepstudio: x4 = [0, 2]\n-- frepstudio: x1 = [-4, 4]\n"
+                       "m(x[4], a[1])\n{\n  m = 1 - x[1]^2 - x[2]^2 - x[3]^2 + x[4];\n}\n");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  auto* spin = window->findChild<QDoubleSpinBox*>("x4Spin");
+  QVERIFY(spin);
+  QCOMPARE(spin->minimum(), 0.0);
+  QCOMPARE(spin->maximum(), 2.0);
+  QVERIFY(window->sectionView()->cellCount() > 0);
+}
+
+void TestFRepStudio::screenshotCommandMatchesBaseline()
+{
+  const QString out = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/command-meta5d.png");
+  QFile::remove(out);
+  QProcess studio;
+  studio.setProcessChannelMode(QProcess::ForwardedChannels);
+  studio.start(QStringLiteral(FREPSTUDIO_EXECUTABLE),
+    { "--screenshot", out, kMeta5D, "--set", "x4=0.3", "--set", "x5=0.6", "--size",
+      QString("%1x%2").arg(kShotSize.width()).arg(kShotSize.height()) });
+  QVERIFY(studio.waitForFinished(kSettleMs));
+  QCOMPARE(studio.exitStatus(), QProcess::NormalExit);
+  QCOMPARE(studio.exitCode(), 0);
+  const QImage shot(out);
+  QVERIFY(!shot.isNull());
+  QVERIFY(non_black_fraction(shot) > 0.9);
+  expectBaseline(shot, "FRepStudioMeta5D", "command-meta5d-compared");
+
+  // Bad arguments are refused with exit code 1, no picture.
+  QProcess refused;
+  refused.start(QStringLiteral(FREPSTUDIO_EXECUTABLE),
+    { "--screenshot", out + ".bad.png", kMeta5D, "--set", "x4" });
+  QVERIFY(refused.waitForFinished(kSettleMs));
+  QCOMPARE(refused.exitCode(), 1);
+  QVERIFY(!QFile::exists(out + ".bad.png"));
+}
+
+void TestFRepStudio::sliderScreenshotMatchesBaseline()
+{
+  // The same picture as the command line's --set, reached by moving the sliders.
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QSlider* x4 = window->coordinatePanel()->slider(3);
+  QSlider* x5 = window->coordinatePanel()->slider(4);
+  QVERIFY(x4 && x5);
+  QCOMPARE(window->coordinatePanel()->sliderCount(), 2);
+  const long long before = window->sectionView()->cellCount();
+  x4->setValue(300);
+  x5->setValue(600);
+  QCOMPARE(window->findChild<QDoubleSpinBox*>("x4Spin")->value(), 0.3);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->sectionView()->cellCount() != before);
+  QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
+    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.3, 0.6 }, 128));
+  expectBaseline(capture_window(*window), "FRepStudioMeta5D", "slider-meta5d");
+}
+
+void TestFRepStudio::errorListShowsFileLineColumn()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kData + "/broken.hf"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  ErrorListWidget* errors = window->errorList();
+  QVERIFY(errors->count() >= 1);
+  QVERIFY2(errors->item(0)->text().startsWith("broken.hf:5:37: error: "),
+    qPrintable(errors->item(0)->text()));
+  QVERIFY(window->editor()->errorUnderlineCount() >= 1);
+  QCOMPARE(window->sectionView()->cellCount(), 0LL);
+
+  // Clicking the row puts the cursor on the error.
+  const QRect row = errors->visualItemRect(errors->item(0));
+  QTest::mouseClick(errors->viewport(), Qt::LeftButton, {}, row.center());
+  QCOMPARE(window->editor()->cursorLocation().line, 5);
+  QCOMPARE(window->editor()->cursorLocation().column, 37);
+
+  // Deleting the stray "* " fixes it: the list empties, the underline goes, the ball appears.
+  QTest::keyClick(window->editor(), Qt::Key_Delete);
+  QTest::keyClick(window->editor(), Qt::Key_Delete);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(errors->count(), 0);
+  QCOMPARE(window->editor()->errorUnderlineCount(), 0);
+  QVERIFY(window->sectionView()->cellCount() > 0);
+}
+
+void TestFRepStudio::typingUpdatesView()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kData + "/sphere.hf"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  const long long radius5 = window->sectionView()->cellCount();
+  QVERIFY(radius5 > 0);
+
+  window->editor()->setFocus();
+  QVERIFY(window->editor()->find("c, 5)"));
+  QTest::keyClicks(window->editor(), "c, 2)");
+  // Analysis waits for the typing to pause (the debounce), then runs in the background.
+  QVERIFY(!window->isSettled());
+  QVERIFY(window->editor()->document()->isModified());
+  QVERIFY(window->windowTitle().contains('*'));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  const long long radius2 = window->sectionView()->cellCount();
+  QVERIFY2(radius2 > 0 && radius2 < radius5,
+    qPrintable(QString("radius 5: %1 triangles, radius 2: %2").arg(radius5).arg(radius2)));
+
+  // A typo keeps the last good section on screen and lists the error.
+  QTest::keyClicks(window->editor(), " +");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->errorList()->count() >= 1);
+  QCOMPARE(window->sectionView()->cellCount(), radius2);
+}
+
+void TestFRepStudio::coarseThenRefinedAndCancelled()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QSignalSpy shown(window.get(), &StudioMainWindow::sectionShown);
+  QSlider* x4 = window->coordinatePanel()->slider(3);
+  QVERIFY(x4);
+
+  // The UI keeps turning while the sections are meshed: a 10 ms timer must keep ticking.
+  QElapsedTimer gap_clock;
+  qint64 longest_gap = 0;
+  QTimer ticker;
+  ticker.setInterval(10);
+  QObject::connect(&ticker, &QTimer::timeout, [&] {
+    longest_gap = std::max(longest_gap, gap_clock.restart());
+  });
+  gap_clock.start();
+  ticker.start();
+  x4->setValue(500);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  ticker.stop();
+  QVERIFY(shown.count() >= 2);
+  QCOMPARE(shown.first().at(0).toInt(), StudioMainWindow::kCoarseResolution);
+  QCOMPARE(shown.last().at(0).toInt(), StudioMainWindow::kRefinedResolution);
+  QVERIFY2(longest_gap < 200, qPrintable(QString("the UI stalled %1 ms").arg(longest_gap)));
+
+  // Ten moves in a row: every older request is cancelled or dropped; only the last value is
+  // shown, coarse then refined, and it is the engine's mesh of that value.
+  shown.clear();
+  for (int i = 0; i < 10; ++i)
+    x4->setValue(100 + 50 * i);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(shown.count(), 2);
+  QCOMPARE(shown.at(0).at(0).toInt(), StudioMainWindow::kCoarseResolution);
+  QCOMPARE(shown.at(1).at(0).toInt(), StudioMainWindow::kRefinedResolution);
+  QCOMPARE(static_cast<std::size_t>(shown.at(1).at(1).toLongLong()),
+    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.55, 0.0 }, 128));
+}
+
+void TestFRepStudio::objectPickerAndParameters()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  auto* picker = window->findChild<QComboBox*>("objectPicker");
+  QVERIFY(picker);
+  QCOMPARE(picker->count(), 6);
+  QCOMPARE(picker->currentText(), QString("my_model"));
+  QVERIFY(window->findChild<QDoubleSpinBox*>("a1Spin"));
+  // Meta5D(x1, x2, x3, 1, 0) is Robot point by point: the section must be the engine's Robot.
+  QVERIFY(window->setValue("x4", 1.0));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
+    engineTriangles(kMeta5D, "robot", {}, 128));
+
+  picker->setCurrentIndex(picker->findText("cat"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(window->coordinatePanel()->sliderCount(), 0); // cat is 3-D
+  QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
+    engineTriangles(kMeta5D, "cat", {}, 128));
+
+  // A parameter field re-meshes like a slider (Meta5D ignores a[1]: same triangles).
+  QSignalSpy shown(window.get(), &StudioMainWindow::sectionShown);
+  window->findChild<QDoubleSpinBox*>("a1Spin")->setValue(2.5);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(shown.count() >= 1);
+}
+
+void TestFRepStudio::attributesColourTheSection()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kData + "/coloured.hf"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  vtkPolyData* section = window->sectionView()->section();
+  QVERIFY(section && section->GetNumberOfPolys() > 0);
+  QVERIFY(section->GetPointData()->GetNormals());
+  auto* colours = vtkUnsignedCharArray::SafeDownCast(section->GetPointData()->GetScalars());
+  QVERIFY(colours);
+  QCOMPARE(QString(colours->GetName()), QString("Colors"));
+  // s[1] = 0.5 + x1 / 10: red follows x1 at every point (rounded to a byte).
+  double point[3];
+  for (vtkIdType i = 0; i < section->GetNumberOfPoints(); i += 997)
+  {
+    section->GetPoint(i, point);
+    const double red = std::clamp(0.5 + point[0] / 10, 0.0, 1.0) * 255;
+    QVERIFY(std::abs(colours->GetTypedComponent(i, 0) - red) <= 1.0);
+    QCOMPARE(int(colours->GetTypedComponent(i, 1)), 77); // s[2] = 0.3
+  }
+  // The file's "-- frepstudio: x1 = [-6, 6]" lines set the box.
+  double bounds[6];
+  section->GetBounds(bounds);
+  QVERIFY(bounds[1] <= 6.0 + 1e-9 && bounds[1] > 5.9); // capped by the box at x1 = 6
+}
+
+void TestFRepStudio::spreadsheetCellMovesSliders()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  SpreadsheetPanel* sheet = window->spreadsheetPanel();
+  QCOMPARE(sheet->cellCount(), 0); // hidden: nothing computed
+  window->showSpreadsheet(true);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  // The paper's layout: rows x5, columns x4, 5 x 5 cells.
+  QCOMPARE(sheet->rowCoordinate(), 1);
+  QCOMPARE(sheet->columnCoordinate(), 0);
+  QCOMPARE(sheet->cellCount(), 25);
+  QCOMPARE(sheet->finishedCells(), 25);
+  // Corners differ (Cat, Robot, NiHon, Rob_let), and no cell is empty.
+  const QImage cat = sheet->cell(0, 0)->icon().pixmap(120).toImage();
+  const QImage roblet = sheet->cell(4, 4)->icon().pixmap(120).toImage();
+  QVERIFY(!cat.isNull() && !roblet.isNull());
+  QVERIFY(testing::compare_images(cat, roblet).changed_pixels > 0.01);
+
+  // Moving a slider that is a row or column does not lay the sheet out again.
+  window->setValue("x4", 0.9);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(sheet->cell(0, 0)->icon().pixmap(120).toImage(), cat);
+
+  // Clicking cell (x5 = 0.5, x4 = 0.75) moves the sliders there and shows that section.
+  QTest::mouseClick(sheet->cell(2, 3), Qt::LeftButton);
+  QCOMPARE(window->findChild<QDoubleSpinBox*>("x4Spin")->value(), 0.75);
+  QCOMPARE(window->findChild<QDoubleSpinBox*>("x5Spin")->value(), 0.5);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->sectionView()->isVisible());
+  QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
+    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.75, 0.5 }, 128));
+}
+
+void TestFRepStudio::mappingEditorRoundTrip()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  MappingEditor* editor = window->mappingEditor();
+  const QString mapping = QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/homotopic/homotopic.json");
+  QVERIFY(editor->loadFile(mapping));
+  QFile in(mapping);
+  QVERIFY(in.open(QIODevice::ReadOnly));
+  const frep::mapping::Spec original = frep::mapping::load_mapping(in.readAll().toStdString()).spec;
+  QVERIFY(editor->spec() == original);
+  QTableWidget* table = editor->table();
+  QCOMPARE(table->rowCount(), 10); // x1..x3 one channel each, x4 three, x5 four
+  QCOMPARE(table->item(3, 0)->text(), QString("x4"));
+  QCOMPARE(qobject_cast<QComboBox*>(table->cellWidget(3, 1))->currentText(),
+    QString("spreadsheet"));
+
+  // Unchanged: the saved file reads back as the same spec.
+  const QString same = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/mapping-same.json");
+  QVERIFY(editor->saveFile(same));
+  QFile same_file(same);
+  QVERIFY(same_file.open(QIODevice::ReadOnly));
+  QVERIFY(frep::mapping::load_mapping(same_file.readAll().toStdString()).spec == original);
+
+  // Edited: x1's channel becomes fixed with range [-5, 5]; nothing else changes.
+  qobject_cast<QComboBox*>(table->cellWidget(0, 1))->setCurrentIndex(3); // "fixed"
+  table->item(0, 2)->setText("-5");
+  table->item(0, 3)->setText("5");
+  frep::mapping::Spec expected = original;
+  expected.coordinates[0].channels[0].type = frep::mapping::Channel::Type::Fixed;
+  expected.coordinates[0].channels[0].range = frep::mapping::Interval{ -5, 5 };
+  QVERIFY(editor->spec() == expected);
+  const QString edited = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/mapping-edited.json");
+  QVERIFY(editor->saveFile(edited));
+  QFile edited_file(edited);
+  QVERIFY(edited_file.open(QIODevice::ReadOnly));
+  const auto reread = frep::mapping::load_mapping(edited_file.readAll().toStdString());
+  QVERIFY(reread.ok());
+  QVERIFY(reread.spec == expected);
+
+  // A bad file is refused with the JSON place of the problem; the editor keeps its mapping.
+  const QString bad = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/mapping-bad.json");
+  QFile bad_file(bad);
+  QVERIFY(bad_file.open(QIODevice::WriteOnly));
+  bad_file.write(R"({ "version": 1, "coordinates": { "x4": [{ "type": "nonsense" }] } })");
+  bad_file.close();
+  QVERIFY(!editor->loadFile(bad));
+  QVERIFY(!editor->errors().isEmpty());
+  QVERIFY2(editor->errors().join('\n').contains("coordinates.x4"),
+    qPrintable(editor->errors().join('\n')));
+  QVERIFY(editor->spec() == expected);
+}
+
+void TestFRepStudio::pathScrubAndPlay()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  PathPanel* path = window->pathPanel();
+  QVERIFY(path->isEnabled());
+  QCOMPARE(path->axes()[0], 0); // x4 across, x5 up
+  QCOMPARE(path->axes()[1], 1);
+  const auto sampled = frep::mapping::SampledPath::make(path->path());
+  QVERIFY(sampled.ok());
+
+  // Scrubbing to the middle puts the sliders on the path's middle (3 decimals in the spin box).
+  path->scrubSlider()->setValue(500);
+  const auto middle = sampled.path.point_at(0.5);
+  QVERIFY(std::abs(window->findChild<QDoubleSpinBox*>("x4Spin")->value() - middle[0]) < 6e-4);
+  QVERIFY(std::abs(window->findChild<QDoubleSpinBox*>("x5Spin")->value() - middle[1]) < 6e-4);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+
+  // Playing moves along the path showing coarse sections only; pausing refines.
+  QSignalSpy shown(window.get(), &StudioMainWindow::sectionShown);
+  path->play();
+  QTest::qWait(600);
+  QVERIFY(path->isPlaying());
+  QVERIFY(path->position() > 0.5);
+  int refined_while_playing = 0;
+  for (const auto& frame : shown)
+    refined_while_playing += frame.at(0).toInt() == StudioMainWindow::kRefinedResolution;
+  QVERIFY(shown.count() >= 2);
+  QCOMPARE(refined_while_playing, 0);
+  path->pause();
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(shown.last().at(0).toInt(), StudioMainWindow::kRefinedResolution);
+
+  // Editing: a left click adds a control point, a right click on it removes it.
+  const int before = static_cast<int>(path->controlPoints().size());
+  PathCanvas* canvas = path->canvas();
+  const QPoint spot = canvas->toPixels({ 0.3, 0.7 }).toPoint();
+  QTest::mouseClick(canvas, Qt::LeftButton, {}, spot);
+  QCOMPARE(static_cast<int>(path->controlPoints().size()), before + 1);
+  QVERIFY(std::abs(path->controlPoints().back()[0] - 0.3) < 0.01);
+  QVERIFY(std::abs(path->controlPoints().back()[1] - 0.7) < 0.01);
+  QTest::mouseClick(canvas, Qt::RightButton, {}, spot);
+  QCOMPARE(static_cast<int>(path->controlPoints().size()), before);
+
+  // A mapping file's path is taken over (homotopic.json: the same six points, closed).
+  path->setControlPoints({ { 0, 0 }, { 1, 1 } });
+  QVERIFY(window->mappingEditor()->loadFile(
+    QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/homotopic/homotopic.json")));
+  QCOMPARE(path->controlPoints().size(), std::size_t(6));
+  QVERIFY(path->path() == *window->mappingEditor()->spec().animation.path);
+
+  // A 3-D object has nothing to animate.
+  window->selectObject("cat");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(!path->isEnabled());
+}
+
+void TestFRepStudio::openCloseCycles()
+{
+  const int top_levels = QApplication::topLevelWidgets().size();
+  const auto examples = StudioMainWindow::examples();
+  for (int i = 0; i < 2 * examples.size(); ++i)
+  {
+    auto window = shownWindow();
+    QVERIFY(window);
+    QVERIFY(window->loadFile(examples[i % examples.size()].second));
+    if (i % 2 == 0)
+      QVERIFY(wait_until_settled(*window, kSettleMs));
+    else
+      QTest::qWait(40); // close while the analysis or the mesher is still running
+  }
+  QApplication::processEvents();
+  QCOMPARE(QApplication::topLevelWidgets().size(), top_levels);
+
+  // The application still works after the cycles.
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kData + "/sphere.hf"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->sectionView()->cellCount() > 0);
+}
+
+int main(int argc, char* argv[])
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("FRepKit");
+  QApplication::setApplicationName("FRepStudioTests");
+  TestFRepStudio test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "TestFRepStudio.moc"

@@ -1,0 +1,113 @@
+// FRepStudio: the HyperFun editor with a live 3-D view of n-D models' cross-sections.
+//   FRepStudio [MODEL.hf]
+//   FRepStudio --screenshot OUT.png MODEL.hf [--set x4=0.3]... [--object NAME] [--size 1280x800]
+//              [--spreadsheet] [--mapping FILE.json]
+// The screenshot mode shows the window once, waits for the refined section, writes OUT.png and
+// exits (0 ok, 1 error): for tests and the documentation, under xvfb-run on a headless machine.
+#include "ErrorListWidget.h"
+#include "MappingEditor.h"
+#include "ScreenshotCapture.h"
+#include "StudioMainWindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSurfaceFormat>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <cstdio>
+
+int main(int argc, char* argv[])
+{
+  // VTK's widget needs its OpenGL format before the application exists.
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("FRepKit");
+  QApplication::setApplicationName("FRepStudio");
+  QApplication::setApplicationVersion(FREPSTUDIO_VERSION);
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription("FRepStudio: HyperFun modelling in n dimensions");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  const QCommandLineOption screenshot("screenshot", "Render once, write FILE (PNG) and exit.",
+    "FILE");
+  const QCommandLineOption set("set", "Set a coordinate or parameter, e.g. x4=0.3 or a1=2.",
+    "NAME=VALUE");
+  const QCommandLineOption object("object", "The object to show (default my_model, else the "
+                                            "first).", "NAME");
+  const QCommandLineOption size("size", "Window size for the screenshot (default 1280x800).",
+    "WxH", "1280x800");
+  const QCommandLineOption timeout("timeout", "Seconds to wait for the refined section.", "S",
+    "120");
+  const QCommandLineOption spreadsheet("spreadsheet",
+    "Show the spreadsheet of cross-sections (the screenshot waits for all its cells).");
+  const QCommandLineOption mapping("mapping", "Open a mapping file (JSON) in the Mapping tab.",
+    "FILE");
+  parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, mapping });
+  parser.addPositionalArgument("model", "The HyperFun file to open.", "[MODEL.hf]");
+  parser.process(app);
+
+  frepstudio::StudioMainWindow window;
+  const QStringList sizes = parser.value(size).split('x');
+  if (sizes.size() != 2 || sizes[0].toInt() <= 0 || sizes[1].toInt() <= 0)
+  {
+    std::fprintf(stderr, "FRepStudio: --size wants WIDTHxHEIGHT, got %s\n",
+      qPrintable(parser.value(size)));
+    return 1;
+  }
+  window.resize(sizes[0].toInt(), sizes[1].toInt());
+  for (const QString& assignment : parser.values(set))
+  {
+    const int equals = assignment.indexOf('=');
+    bool number = false;
+    const double value = equals > 0 ? assignment.mid(equals + 1).toDouble(&number) : 0;
+    if (!number || !window.setValue(assignment.left(equals).trimmed(), value))
+    {
+      std::fprintf(stderr, "FRepStudio: --set wants NAME=VALUE (x4=0.3, a1=2), got %s\n",
+        qPrintable(assignment));
+      return 1;
+    }
+  }
+  if (parser.isSet(object))
+    window.selectObject(parser.value(object));
+
+  const QStringList models = parser.positionalArguments();
+  if (parser.isSet(screenshot) && models.size() != 1)
+  {
+    std::fprintf(stderr, "FRepStudio: --screenshot needs one model file\n");
+    return 1;
+  }
+  window.show();
+  if (parser.isSet(spreadsheet))
+    window.showSpreadsheet(true);
+  if (parser.isSet(mapping) && !window.showMapping(parser.value(mapping)))
+  {
+    std::fprintf(stderr, "FRepStudio: cannot read the mapping %s:\n%s\n",
+      qPrintable(parser.value(mapping)),
+      qPrintable(window.mappingEditor()->errors().join('\n')));
+    return 1;
+  }
+  if (!models.isEmpty() && !window.loadFile(models.front()))
+  {
+    std::fprintf(stderr, "FRepStudio: cannot open %s\n", qPrintable(models.front()));
+    if (parser.isSet(screenshot))
+      return 1;
+  }
+  if (models.isEmpty())
+    window.loadFile(frepstudio::StudioMainWindow::examples()[4].second); // Meta5D
+
+  if (parser.isSet(screenshot))
+  {
+    const QString error = frepstudio::write_screenshot(
+      window, parser.value(screenshot), parser.value(timeout).toInt() * 1000);
+    if (!error.isEmpty())
+    {
+      std::fprintf(stderr, "FRepStudio: screenshot failed: %s\n", qPrintable(error));
+      return 1;
+    }
+    if (window.analysis() == nullptr || !window.errorList()->messages().isEmpty())
+      std::fprintf(stderr, "FRepStudio: note: the model has errors (see the picture)\n");
+    return 0;
+  }
+  return app.exec();
+}

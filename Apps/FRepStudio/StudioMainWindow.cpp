@@ -1,5 +1,7 @@
 #include "StudioMainWindow.h"
 
+#include "AnimationExport.h"
+
 #include "CoordinatePanel.h"
 #include "ErrorListWidget.h"
 #include "MappingEditor.h"
@@ -8,6 +10,8 @@
 #include "SpreadsheetPanel.h"
 
 #include <QAction>
+
+#include <algorithm>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -19,6 +23,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
@@ -189,6 +194,36 @@ void StudioMainWindow::buildMenus()
     if (!path.isEmpty())
       saveTo(path);
   }, QKeySequence::SaveAs);
+  file->addSeparator();
+  file->addAction(tr("&Export Animation..."), this, [this] {
+    const QString directory = QFileDialog::getExistingDirectory(this, tr("Export the animation into"));
+    if (directory.isEmpty())
+      return;
+    QString error;
+    AnimationExport* job = exportAnimation(directory, &error);
+    if (!job)
+    {
+      QMessageBox::warning(this, tr("Export"), error);
+      return;
+    }
+    auto* dialog = new QProgressDialog(tr("Exporting frames, sound and movie..."), tr("Cancel"), 0,
+      job->expectedFrames(), this);
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setMinimumDuration(0);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(job, &AnimationExport::progress, dialog, [dialog](int frames, int total) {
+      dialog->setMaximum(total);
+      dialog->setValue(std::min(frames, total - 1)); // the movie follows the last frame
+    });
+    connect(dialog, &QProgressDialog::canceled, job, &AnimationExport::cancel);
+    connect(job, &AnimationExport::finished, this, [this, dialog](bool ok, const QString& message) {
+      dialog->close();
+      if (ok)
+        QMessageBox::information(this, tr("Export"), message);
+      else
+        QMessageBox::warning(this, tr("Export"), message);
+    });
+  });
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
 
@@ -504,6 +539,24 @@ void StudioMainWindow::closeEvent(QCloseEvent* event)
     event->accept();
   else
     event->ignore();
+}
+
+AnimationExport* StudioMainWindow::exportAnimation(const QString& directory, QString* error)
+{
+  frep::mapping::Spec spec = mapping_->spec();
+  if (!spec.animation.path && path_->isEnabled() && path_->controlPoints().size() >= 2)
+  {
+    spec.animation.path = path_->path();
+  }
+  auto* job = new AnimationExport(this);
+  const QString object = QString::fromStdString(panel_->currentObject());
+  if (!job->start(editor_->toPlainText(), object, spec, directory, error))
+  {
+    delete job;
+    return nullptr;
+  }
+  connect(job, &AnimationExport::finished, job, &QObject::deleteLater);
+  return job;
 }
 
 } // namespace frepstudio

@@ -28,6 +28,7 @@ class SectionView;
 class SpreadsheetPanel;
 class MappingEditor;
 class PathPanel;
+class AnimationExport;
 
 class StudioMainWindow : public QMainWindow
 {
@@ -71,6 +72,12 @@ public:
   void showSpreadsheet(bool show);
   /// Opens a mapping file in the Mapping tab and shows it; false when it cannot be read.
   bool showMapping(const QString& path);
+
+  /// Starts exporting the animation of the Mapping tab's mapping (the path panel's path when
+  /// the mapping has none) into `directory` through `frepkit map`; returns the running export
+  /// (owned by the window) or null with `error`. File > Export Animation... shows its progress
+  /// in a dialog whose Cancel stops it.
+  AnimationExport* exportAnimation(const QString& directory, QString* error);
 
   /// The examples of the Examples menu: title and path.
   static QList<QPair<QString, QString>> examples();

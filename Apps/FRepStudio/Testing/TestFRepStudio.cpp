@@ -11,11 +11,15 @@
 #include "SectionView.h"
 #include "SpreadsheetPanel.h"
 #include "StudioMainWindow.h"
+#include "AnimationExport.h"
+#include "mapping_json.h"
 
 #include "Language/parser.h"
 #include "Mesh/surface.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -120,6 +124,8 @@ private slots:
   void mappingEditorRoundTrip();
   void pathScrubAndPlay();
   void openCloseCycles();
+  void exportAnimationWritesMovie();
+  void exportAnimationCancels();
 };
 
 void TestFRepStudio::coordinateRangesFromFile()
@@ -519,6 +525,85 @@ void TestFRepStudio::openCloseCycles()
   QVERIFY(window->loadFile(kData + "/sphere.hf"));
   QVERIFY(wait_until_settled(*window, kSettleMs));
   QVERIFY(window->sectionView()->cellCount() > 0);
+}
+
+namespace
+{
+// morph4d: a ball turning into a torus as x4 goes from 0 to 1; x4 is time (and pitch).
+QString morphMapping(double duration, double fps)
+{
+  return QString(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2.4, 2.4] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2.4, 2.4] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-2.4, 2.4] }],
+    "x4": [{ "type": "dynamic", "range": [0, 1] },
+           { "type": "audio", "parameter": "pitch", "range": [0, 1], "target": [220, 440] }] },
+  "animation": { "duration": %1, "fps": %2 },
+  "world": { "resolution": 24 },
+  "render": { "width": 160, "height": 90 } })")
+    .arg(duration)
+    .arg(fps);
+}
+
+int framesIn(const QString& directory)
+{
+  return static_cast<int>(
+    QDir(directory + "/frames").entryList({ "frame_*.png" }, QDir::Files).size());
+}
+} // namespace
+
+void TestFRepStudio::exportAnimationWritesMovie()
+{
+  auto window = shownWindow();
+  QVERIFY(window->loadFile(QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/mapping/morph4d.hf")));
+  const auto loaded = frep::mapping::load_mapping(morphMapping(1, 8).toStdString());
+  QVERIFY(loaded.errors.empty());
+  window->mappingEditor()->setSpec(loaded.spec);
+  const QString out = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/export-movie");
+  QDir(out).removeRecursively();
+  QString error;
+  AnimationExport* job = window->exportAnimation(out, &error);
+  QVERIFY2(job, qPrintable(error));
+  QCOMPARE(job->expectedFrames(), 8);
+  QSignalSpy progress(job, &AnimationExport::progress);
+  QSignalSpy finished(job, &AnimationExport::finished);
+  QVERIFY(finished.wait(120000));
+  QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+  QVERIFY(progress.count() >= 1);
+  QCOMPARE(progress.last().at(0).toInt(), 8);
+  QCOMPARE(framesIn(out), 8);
+  QVERIFY(QFileInfo(out + "/animation.mp4").size() > 1000);
+  QVERIFY(QFileInfo(out + "/animation.wav").size() > 1000);
+  QVERIFY(QFileInfo::exists(out + "/manifest.json"));
+}
+
+void TestFRepStudio::exportAnimationCancels()
+{
+  auto window = shownWindow();
+  QVERIFY(window->loadFile(QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/mapping/morph4d.hf")));
+  // 600 frames: long enough to be cancelled in the middle
+  const auto loaded = frep::mapping::load_mapping(morphMapping(25, 24).toStdString());
+  QVERIFY(loaded.errors.empty());
+  window->mappingEditor()->setSpec(loaded.spec);
+  const QString out = QStringLiteral(FREPSTUDIO_TEST_OUTPUT "/export-cancel");
+  QDir(out).removeRecursively();
+  QString error;
+  AnimationExport* job = window->exportAnimation(out, &error);
+  QVERIFY2(job, qPrintable(error));
+  QSignalSpy finished(job, &AnimationExport::finished);
+  QTRY_VERIFY_WITH_TIMEOUT(framesIn(out) >= 3, 60000);
+  job->cancel();
+  QVERIFY(finished.wait(30000));
+  QVERIFY(!finished.at(0).at(0).toBool());
+  QVERIFY(finished.at(0).at(1).toString().contains("cancelled"));
+  const int kept = framesIn(out);
+  QVERIFY(kept >= 3 && kept < 600);
+  QVERIFY(!QFileInfo::exists(out + "/animation.mp4"));
+  // nothing half-written: no temporary files next to the frames
+  const QStringList leftovers =
+    QDir(out + "/frames").entryList({ "*.tmp*", "*partial*" }, QDir::Files | QDir::Hidden);
+  QVERIFY2(leftovers.isEmpty(), qPrintable(leftovers.join(", ")));
 }
 
 int main(int argc, char* argv[])

@@ -19,10 +19,10 @@
 
 vtkStandardNewMacro(vtkFRepPolygonizer);
 
-namespace
-{
+//------------------------------------------------------------------------------
 // The mesher's points, cells, normals and attributes as vtkPolyData arrays.
-void ToPolyData(const frep::mesh::Surface& surface, int precision, vtkPolyData* output)
+void vtkFRepPolygonizer::ConvertSurface(
+  const frep::mesh::Surface& surface, int precision, vtkPolyData* output)
 {
   const auto count = static_cast<vtkIdType>(surface.point_count());
   vtkNew<vtkPoints> points;
@@ -78,7 +78,6 @@ void ToPolyData(const frep::mesh::Surface& surface, int precision, vtkPolyData* 
     output->GetPointData()->AddArray(s);
   }
 }
-} // namespace
 
 //------------------------------------------------------------------------------
 vtkFRepPolygonizer::vtkFRepPolygonizer() = default;
@@ -192,7 +191,7 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
                     << " grid points raised a run-time error in the model and count as outside "
                        "(frepkit eval on such a point gives the message and position)");
   }
-  ToPolyData(result.surface, this->OutputPointsPrecision, output);
+  ConvertSurface(result.surface, this->OutputPointsPrecision, output);
   return 1;
 }
 

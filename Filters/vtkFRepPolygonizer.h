@@ -36,6 +36,15 @@
 
 #include <cstddef> // for std::size_t
 
+class vtkPolyData;
+namespace frep
+{
+namespace mesh
+{
+struct Surface;
+}
+}
+
 class FREPKITFILTERS_EXPORT vtkFRepPolygonizer : public vtkPolyDataAlgorithm
 {
 public:
@@ -150,6 +159,16 @@ public:
   std::size_t GetNumberOfCulledBoxes() const { return this->CulledBoxes; }
   std::size_t GetNumberOfFailedSamples() const { return this->FailedSamples; }
   ///@}
+
+  /**
+   * An engine mesh (frep::mesh::Surface) as vtkPolyData, the way this filter outputs it:
+   * points in `precision` (vtkAlgorithm::SINGLE_PRECISION or DOUBLE_PRECISION), triangles (3-D)
+   * or lines (2-D) as one offsets + connectivity pair, "Normals" (set as the normals) and "s"
+   * (s_dim components) when the surface has them. Replaces `output`'s points, cells and point
+   * data. Shared by every FRepKit producer of meshes (vtkMultimediaMapper, FRepStudio).
+   */
+  static void ConvertSurface(
+    const frep::mesh::Surface& surface, int precision, vtkPolyData* output);
 
 protected:
   vtkFRepPolygonizer();

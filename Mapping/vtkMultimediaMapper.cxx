@@ -7,10 +7,10 @@
 #include "tone_synthesis.h"
 
 #include "vtkFRepObject.h"
+#include "vtkFRepPolygonizer.h"
 
 #include "Eval/thread_pool.h"
 
-#include "vtkCellArray.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataAssembly.h"
 #include "vtkDoubleArray.h"
@@ -26,7 +26,6 @@
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
@@ -160,44 +159,9 @@ void AddSampleFieldData(vtkFieldData* fd,
 vtkSmartPointer<vtkPolyData> ToPolyData(const frep::mapping::Section& section,
   const frep::mapping::Sample& sample)
 {
-  const frep::mesh::Surface& s = section.surface;
   auto poly = vtkSmartPointer<vtkPolyData>::New();
-  const vtkIdType n = static_cast<vtkIdType>(s.point_count());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, s.points[3 * i], s.points[3 * i + 1], s.points[3 * i + 2]);
-  }
-  poly->SetPoints(points);
-  const int per = s.dimension == 3 ? 3 : 2;
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(static_cast<vtkIdType>(s.cell_count()), s.cells.size());
-  vtkIdType ids[3];
-  for (std::size_t c = 0; c + per <= s.cells.size(); c += per)
-  {
-    for (int k = 0; k < per; ++k)
-    {
-      ids[k] = s.cells[c + k];
-    }
-    cells->InsertNextCell(per, ids);
-  }
-  if (per == 3)
-  {
-    poly->SetPolys(cells);
-  }
-  else
-  {
-    poly->SetLines(cells);
-  }
-  if (!s.normals.empty())
-  {
-    auto normals = MakeArray<vtkFloatArray>("Normals", 3);
-    normals->SetNumberOfTuples(n);
-    std::copy(s.normals.begin(), s.normals.end(), normals->GetPointer(0));
-    poly->GetPointData()->SetNormals(normals);
-  }
+  vtkFRepPolygonizer::ConvertSurface(section.surface, vtkAlgorithm::SINGLE_PRECISION, poly);
+  const vtkIdType n = static_cast<vtkIdType>(section.surface.point_count());
   auto colours = MakeArray<vtkUnsignedCharArray>("Colors", 3);
   colours->SetNumberOfTuples(n);
   for (vtkIdType i = 0; i < n; ++i)

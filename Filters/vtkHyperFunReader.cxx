@@ -3,6 +3,8 @@
 #include "vtkFRepObject.h"
 #include "vtkFRepPolygonizer.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -57,8 +59,9 @@ int vtkHyperFunReader::FillOutputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkHyperFunReader::RequestDataObject(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkHyperFunReader::RequestDataObject(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (!this->Superclass::RequestDataObject(request, inInfo, outInfo))
   {
@@ -99,8 +102,9 @@ bool vtkHyperFunReader::ReadProgram(std::string& text, std::string& sourceName) 
 }
 
 //------------------------------------------------------------------------------
-int vtkHyperFunReader::RequestInformation(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkHyperFunReader::RequestInformation(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (!this->Superclass::RequestInformation(request, inInfo, outInfo))
   {
@@ -139,8 +143,9 @@ int vtkHyperFunReader::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
-int vtkHyperFunReader::RequestData(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkHyperFunReader::RequestData(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (!this->Superclass::RequestData(request, inInfo, outInfo))
   {
@@ -172,15 +177,30 @@ int vtkHyperFunReader::RequestData(
 
   vtkNew<vtkFRepPolygonizer> polygonizer;
   polygonizer->SetInputData(section);
+  // The default mesh is the long part of this reader: its progress is ours, and our abort
+  // (AbortExecute, or an observer asking for it) stops it.
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback(
+    [](vtkObject* caller, unsigned long, void* self, void* data)
+    {
+      auto* reader = static_cast<vtkHyperFunReader*>(self);
+      reader->UpdateProgress(*static_cast<double*>(data));
+      if (reader->CheckAbort())
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    });
+  polygonizer->AddObserver(vtkCommand::ProgressEvent, forward);
   polygonizer->SetSampleDimensions(
     this->GeometryResolution, this->GeometryResolution, this->GeometryResolution);
   const int piece = geometryInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
+                      ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                      : 0;
   const int pieces =
     geometryInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    : 1;
+      ? geometryInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+      : 1;
   polygonizer->UpdatePiece(piece, pieces, 0);
   geometry->ShallowCopy(polygonizer->GetOutput());
   geometry->GetFieldData()->ShallowCopy(section->GetFieldData());

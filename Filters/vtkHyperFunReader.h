@@ -28,6 +28,9 @@
  * comes first, then the others in the order of the file. A program that does not parse gives
  * an empty list here; its diagnostics (file:line:col) are reported once, by RequestData.
  *
+ * Meshing the default geometry reports progress through the reader, and AbortExecute (or an
+ * observer setting it) stops it, leaving port 1 empty.
+ *
  * @sa vtkHyperFunSource vtkFRepPolygonizer vtkFRepSlice
  */
 

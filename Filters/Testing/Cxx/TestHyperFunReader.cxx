@@ -8,6 +8,8 @@
 #include "vtkHyperFunReader.h"
 #include "vtkHyperFunSource.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -163,6 +165,49 @@ int TestHyperFunReader(int, char*[])
   FREPKIT_CHECK(failures, events->Errors == 0);
   FREPKIT_CHECK(failures, reader->GetGeometryOutput()->GetNumberOfPolys() == whole);
   FREPKIT_CHECK(failures, reader->GetObjectNames()->GetNumberOfValues() == 2);
+
+  // The default mesh reports progress through the reader, and an abort stops it.
+  {
+    vtkNew<vtkHyperFunReader> meshing;
+    meshing->SetModelText(Program);
+    meshing->SetGeometryResolution(48);
+    double last = -1;
+    int progressEvents = 0;
+    struct Watch
+    {
+      double* last;
+      int* count;
+    } watch{ &last, &progressEvents };
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetClientData(&watch);
+    onProgress->SetCallback(
+      [](vtkObject*, unsigned long, void* w, void* data)
+      {
+        auto* watch = static_cast<Watch*>(w);
+        *watch->last = *static_cast<double*>(data);
+        ++*watch->count;
+      });
+    meshing->AddObserver(vtkCommand::ProgressEvent, onProgress);
+    meshing->Update();
+    FREPKIT_CHECK(failures, progressEvents > 2);
+    FREPKIT_CHECK(failures, meshing->GetGeometryOutput()->GetNumberOfPolys() > 0);
+
+    vtkNew<vtkHyperFunReader> aborted;
+    aborted->SetModelText(Program);
+    aborted->SetGeometryResolution(48);
+    vtkNew<vtkCallbackCommand> abort;
+    abort->SetCallback(
+      [](vtkObject* caller, unsigned long, void*, void* data)
+      {
+        if (*static_cast<double*>(data) > 0.0 && *static_cast<double*>(data) < 1.0)
+        {
+          static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+        }
+      });
+    aborted->AddObserver(vtkCommand::ProgressEvent, abort);
+    aborted->Update();
+    FREPKIT_CHECK(failures, aborted->GetGeometryOutput()->GetNumberOfPolys() == 0);
+  }
 
   // A missing file: one error naming it.
   events->Clear();

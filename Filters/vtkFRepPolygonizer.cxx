@@ -173,7 +173,10 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
   const frep::mesh::ExtractResult result =
     dimension == 3 ? frep::mesh::extract_surface(description.Tape, grid, options)
                    : frep::mesh::extract_contour(description.Tape, grid, options);
-  if (result.cancelled)
+  // Only this thread's progress calls look at the observers' abort request; when the other
+  // workers finish the grid before the next such call, the extraction completes although an
+  // abort was asked for. Aborted means empty, whoever noticed it.
+  if (result.cancelled || this->GetAbortExecute())
   {
     return 1; // aborted: empty output
   }

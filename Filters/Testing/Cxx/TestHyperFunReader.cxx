@@ -170,7 +170,7 @@ int TestHyperFunReader(int, char*[])
   {
     vtkNew<vtkHyperFunReader> meshing;
     meshing->SetModelText(Program);
-    meshing->SetGeometryResolution(48);
+    meshing->SetGeometryResolution(128);
     double last = -1;
     int progressEvents = 0;
     struct Watch
@@ -194,7 +194,10 @@ int TestHyperFunReader(int, char*[])
 
     vtkNew<vtkHyperFunReader> aborted;
     aborted->SetModelText(Program);
-    aborted->SetGeometryResolution(48);
+    // 128^3 samples are 64 blocks of the mesher: the thread that may call observers reports
+    // between 0 and 1 many times. At 48^3 (8 blocks) the other worker could finish all but the
+    // last block while this one was descheduled, and no report came before 1 (seen under load).
+    aborted->SetGeometryResolution(128);
     vtkNew<vtkCallbackCommand> abort;
     abort->SetCallback(
       [](vtkObject* caller, unsigned long, void*, void* data)

@@ -8,7 +8,7 @@
 
 #include "Compiler/model.h"
 #include "Eval/batch_evaluator.h"
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 #include "Eval/point_evaluator.h"
 #include "Language/parser.h"
 

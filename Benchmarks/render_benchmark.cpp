@@ -1,7 +1,7 @@
 // Timing of the mesh renderer (not a test): a ~300k-triangle rippled sphere at 1280 x 720 with
 // 2 x 2 supersampling, 1 thread and all threads. Usage: frep_render_benchmark [repeats] [out.ppm]
-#include "camera.h"
-#include "mesh_renderer.h"
+#include "Render/camera.h"
+#include "Render/mesh_renderer.h"
 #include "test_meshes.h"
 
 #include <algorithm>

@@ -2,9 +2,9 @@
 
 #include "vtkMultimediaMapping.h"
 
-#include "mapping_plan.h"
-#include "section_mesh.h"
-#include "tone_synthesis.h"
+#include "Plan/mapping_plan.h"
+#include "Scene/section_mesh.h"
+#include "Media/tone_synthesis.h"
 
 #include "vtkFRepObject.h"
 #include "vtkFRepPolygonizer.h"

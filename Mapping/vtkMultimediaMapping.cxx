@@ -1,6 +1,6 @@
 #include "vtkMultimediaMapping.h"
 
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
 #include "vtkObjectFactory.h"
 

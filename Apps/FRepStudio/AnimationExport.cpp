@@ -1,6 +1,6 @@
 #include "AnimationExport.h"
 
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -5,7 +5,7 @@
 // Progress is the count of frames on disk.
 #pragma once
 
-#include "mapping_spec.h"
+#include "Plan/mapping_spec.h"
 
 #include <QObject>
 #include <QProcess>

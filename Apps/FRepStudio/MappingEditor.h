@@ -5,7 +5,7 @@
 // and every field the editor does not show is kept as it was read.
 #pragma once
 
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
 #include <QWidget>
 

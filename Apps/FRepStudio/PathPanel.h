@@ -6,7 +6,7 @@
 // when the animation pauses (the main window's rest timer).
 #pragma once
 
-#include "path.h"
+#include "Plan/path.h"
 
 #include <QTimer>
 #include <QWidget>

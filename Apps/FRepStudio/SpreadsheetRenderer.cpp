@@ -4,8 +4,8 @@
 #include "mesh_writers/vertex_colours.h"
 
 #include "Mesh/surface.h"
-#include "image.h"
-#include "mesh_renderer.h"
+#include "Render/image.h"
+#include "Render/mesh_renderer.h"
 
 #include <cmath>
 #include <optional>

@@ -2,7 +2,7 @@
 
 #include "Compiler/model.h"
 #include "Eval/batch_evaluator.h"
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 #include "atomic_output.h"
 #include "model_loading.h"
 #include "number_format.h"

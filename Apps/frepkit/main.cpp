@@ -2,10 +2,8 @@
 #include "check_command.h"
 #include "eval_command.h"
 #include "hfp_command.h"
-#ifdef FREPKIT_HAVE_MAP
 #include "demo_command.h"
 #include "map_command.h"
-#endif
 #include "mesh_command.h"
 #include "slice_command.h"
 #include "user_error.h"
@@ -70,12 +68,10 @@ int main(int argc, char** argv)
   CLI::App* eval = frepkit::add_eval_command(app, eval_options);
   CLI::App* mesh = frepkit::add_mesh_command(app, mesh_options);
   CLI::App* slice = frepkit::add_slice_command(app, slice_options);
-#ifdef FREPKIT_HAVE_MAP
   frepkit::MapOptions map_options;
   CLI::App* map = frepkit::add_map_command(app, map_options);
   frepkit::DemoOptions demo_options;
   CLI::App* demo = frepkit::add_demo_command(app, demo_options);
-#endif
   // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
   app
     .add_subcommand("hfp",
@@ -112,7 +108,6 @@ int main(int argc, char** argv)
       {
         return frepkit::run_slice(slice_options);
       }
-#ifdef FREPKIT_HAVE_MAP
       if (map->parsed())
       {
         return frepkit::run_map(map_options);
@@ -121,7 +116,6 @@ int main(int argc, char** argv)
       {
         return frepkit::run_demo(demo_options);
       }
-#endif
       return 0;
     });
 }

@@ -7,13 +7,13 @@
 #include "section_writers/png_writer.h"
 #include "user_error.h"
 
-#include "mapping_json.h"
-#include "mapping_plan.h"
-#include "movie_encoder.h"
-#include "pictures.h"
-#include "section_mesh.h"
-#include "tone_synthesis.h"
-#include "wav_writer.h"
+#include "Plan/mapping_json.h"
+#include "Plan/mapping_plan.h"
+#include "Media/movie_encoder.h"
+#include "Scene/pictures.h"
+#include "Scene/section_mesh.h"
+#include "Media/tone_synthesis.h"
+#include "Media/wav_writer.h"
 
 #include "Eval/thread_pool.h"
 

@@ -4,10 +4,10 @@
 // meshed and measured, and the spreadsheet is drawn headless into a PPM picture.
 //
 //   build/bin/frep_example_multimedia_mapping Examples/mapping/morph4d.hf spreadsheet.ppm
-#include "mapping_plan.h"
-#include "mapping_spec.h"
-#include "pictures.h"
-#include "section_mesh.h"
+#include "Plan/mapping_plan.h"
+#include "Plan/mapping_spec.h"
+#include "Scene/pictures.h"
+#include "Scene/section_mesh.h"
 
 #include "Compiler/model.h"
 #include "Language/parser.h"

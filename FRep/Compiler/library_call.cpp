@@ -1,8 +1,8 @@
 #include "Compiler/library_call.h"
 
-#include "Eval/error_positions.h"
-#include "Eval/interpreter.h"
-#include "Eval/runtime_messages.h"
+#include "Semantics/error_positions.h"
+#include "Semantics/interpreter.h"
+#include "Semantics/runtime_messages.h"
 #include "Library/library.h"
 
 #include <map>
@@ -242,7 +242,7 @@ private:
       else if (const auto* e = std::get_if<ast::AssignElement>(&s.node))
       {
         expr(*e->index);
-        add(messages::kIndexOutOfRange, eval::index_write_location(*e->index, e->index_end));
+        add(messages::kIndexOutOfRange, semantics::index_write_location(*e->index, e->index_end));
         expr(*e->value);
       }
       else if (const auto* i = std::get_if<ast::IfStmt>(&s.node))
@@ -274,7 +274,7 @@ private:
     if (n.index)
     {
       expr(*n.index);
-      add(messages::kIndexOutOfRange, eval::first_instruction_location(*n.index));
+      add(messages::kIndexOutOfRange, semantics::first_instruction_location(*n.index));
     }
     add(messages::kUnassignedElement, e.location);
   }
@@ -346,8 +346,8 @@ private:
   }
   void node(const ast::Expr& e, const ast::ObjectCallExpr& n)
   {
-    add(messages::kUnassignedArray, eval::object_call_x_check_location(n));
-    add(messages::kUnassignedArray, eval::object_call_as_check_location(n, e.location));
+    add(messages::kUnassignedArray, semantics::object_call_x_check_location(n));
+    add(messages::kUnassignedArray, semantics::object_call_as_check_location(n, e.location));
     object(n.object);
   }
 

@@ -11,8 +11,8 @@
 
 #include "Compiler/expr.h"
 #include "Compiler/library_call.h"
-#include "Eval/error_positions.h"
-#include "Eval/runtime_messages.h"
+#include "Semantics/error_positions.h"
+#include "Semantics/runtime_messages.h"
 #include "Library/library.h"
 #include "Library/library_generic.h"
 
@@ -239,7 +239,7 @@ private:
     const Expr in_range = logical_and(r >= Expr(1.0), r <= Expr(n));
     guard(logical_not(in_range),
       messages::kIndexOutOfRange,
-      eval::index_write_location(*s.index, s.index_end));
+      semantics::index_write_location(*s.index, s.index_end));
     if (dead_)
     {
       return;
@@ -391,7 +391,7 @@ private:
     const Expr in_range = logical_and(r >= Expr(1.0), r <= Expr(size));
     guard(logical_not(in_range),
       messages::kIndexOutOfRange,
-      eval::first_instruction_location(*n.index));
+      semantics::first_instruction_location(*n.index));
     if (dead_ || cells.empty())
     {
       return Expr(0.0);
@@ -775,8 +775,8 @@ private:
     std::vector<Cell>& ss = n.s ? frame.array(*n.s) : frame.arrays[2];
     guard(not_assigned(all_assigned(xs)),
       messages::kUnassignedArray,
-      eval::object_call_x_check_location(n));
-    const SourceLocation as_at = eval::object_call_as_check_location(n, e.location);
+      semantics::object_call_x_check_location(n));
+    const SourceLocation as_at = semantics::object_call_as_check_location(n, e.location);
     guard(not_assigned(all_assigned(as)), messages::kUnassignedArray, as_at);
     const std::size_t s_count = std::min(ss.size(), static_cast<std::size_t>(callee.s_dim));
     std::vector<Cell> s_used(ss.begin(), ss.begin() + static_cast<std::ptrdiff_t>(s_count));

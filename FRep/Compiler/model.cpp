@@ -6,7 +6,7 @@
 
 #include "Compiler/model_impl.h"
 #include "Compiler/object_source.h"
-#include "Eval/ast_validation.h"
+#include "Semantics/ast_validation.h"
 
 #include <stdexcept>
 
@@ -91,7 +91,7 @@ Model::CompileResult Model::compile(std::shared_ptr<const ast::Program> program,
   const ast::Object& object = program->objects[static_cast<std::size_t>(object_index)];
   try
   {
-    eval::validate_object_graph(*program, object_index);
+    semantics::validate_object_graph(*program, object_index);
   }
   catch (const std::exception& e)
   {

@@ -3,7 +3,7 @@
 // evaluator would have computed at run time; evaluators may use it as their scalar reference.
 #pragma once
 
-#include "Compiler/op_semantics.h"
+#include "Semantics/op_semantics.h"
 #include "Compiler/tape.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "Eval/tape_check.h"
+#include "Compiler/tape_check.h"
 
 #include <stdexcept>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "Eval/batch_kernel.h"
 #include "Eval/batch_program.h"
-#include "Eval/tape_check.h"
+#include "Compiler/tape_check.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>

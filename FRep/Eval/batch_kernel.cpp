@@ -5,8 +5,8 @@
 #include "Eval/batch_program.h"
 #include "Eval/batch_scalar_lanes.h"
 
-#include "Compiler/op_semantics.h"
-#include "Eval/scalar_ops.h"
+#include "Semantics/op_semantics.h"
+#include "Eval/instruction_value.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "Eval/batch_scalar_lanes.h"
 
-#include "Compiler/op_semantics.h"
+#include "Semantics/op_semantics.h"
 
 namespace frep::eval
 {

@@ -1,8 +1,8 @@
 #include "Eval/gradient_evaluator.h"
 
-#include "Compiler/op_semantics.h"
-#include "Eval/scalar_ops.h"
-#include "Eval/tape_check.h"
+#include "Semantics/op_semantics.h"
+#include "Eval/instruction_value.h"
+#include "Compiler/tape_check.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,11 +1,11 @@
 // The value of one pure tape instruction at one point: the single definition the point, batch
 // (for the lanes it does not vectorise) and gradient evaluators share, so that they cannot
-// drift apart. Everything HyperFun-specific is delegated to Compiler/op_semantics.h, which
+// drift apart. Everything HyperFun-specific is delegated to Semantics/op_semantics.h, which
 // the compiler's constant folding also uses.
 #pragma once
 
 #include "Compiler/op_eval.h"
-#include "Compiler/op_semantics.h"
+#include "Semantics/op_semantics.h"
 #include "Compiler/tape.h"
 
 #include <cmath>

@@ -10,8 +10,8 @@
 //   magnitudes (see r_function()).
 #include "Eval/interval_evaluator.h"
 
-#include "Compiler/op_semantics.h"
-#include "Eval/tape_check.h"
+#include "Semantics/op_semantics.h"
+#include "Compiler/tape_check.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "Eval/ast_validation.h"
+#include "Semantics/ast_validation.h"
 
 #include "Language/function_table.h"
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace frep::eval
+namespace frep::semantics
 {
 namespace
 {
@@ -265,4 +265,4 @@ void validate_object_graph(const ast::Program& program, int object_index)
   Validator(program).check_object(object_index);
 }
 
-} // namespace frep::eval
+} // namespace frep::semantics

@@ -6,7 +6,7 @@
 
 #include "Language/ast.h"
 
-namespace frep::eval
+namespace frep::semantics
 {
 
 /// Number of items of a whole-array reference inside `object` (-1 when the reference is invalid).
@@ -16,4 +16,4 @@ int array_size(const ast::Object& object, const ast::ArrayName& array);
 /// Throws std::invalid_argument describing the first problem.
 void validate_object_graph(const ast::Program& program, int object_index);
 
-} // namespace frep::eval
+} // namespace frep::semantics

@@ -1,9 +1,9 @@
-#include "Eval/error_positions.h"
+#include "Semantics/error_positions.h"
 
 #include <type_traits>
 #include <variant>
 
-namespace frep::eval
+namespace frep::semantics
 {
 namespace
 {
@@ -122,4 +122,4 @@ SourceLocation object_call_as_check_location(const ast::ObjectCallExpr& call,
   return call.close_paren.valid() ? call.close_paren : call_location;
 }
 
-} // namespace frep::eval
+} // namespace frep::semantics

@@ -8,7 +8,7 @@
 #include "Language/ast.h"
 #include "Language/source_location.h"
 
-namespace frep::eval
+namespace frep::semantics
 {
 
 /// Position of the FIRST instruction of an expression's postfix code: its leftmost innermost
@@ -34,4 +34,4 @@ SourceLocation object_call_x_check_location(const ast::ObjectCallExpr& call);
 SourceLocation object_call_as_check_location(const ast::ObjectCallExpr& call,
   SourceLocation call_location);
 
-} // namespace frep::eval
+} // namespace frep::semantics

@@ -7,12 +7,12 @@
 // once and one preallocated frame per object suffices: no allocation per point or per call.
 // "Assigned in this evaluation" is a generation stamp per slot, so unsetting every local at the
 // start of an evaluation costs one increment.
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 
-#include "Compiler/op_semantics.h"
-#include "Eval/ast_validation.h"
-#include "Eval/error_positions.h"
-#include "Eval/runtime_messages.h"
+#include "Semantics/op_semantics.h"
+#include "Semantics/ast_validation.h"
+#include "Semantics/error_positions.h"
+#include "Semantics/runtime_messages.h"
 #include "Library/library.h"
 
 #include <algorithm>
@@ -78,7 +78,7 @@ public:
     : program_(program)
     , options_(options)
   {
-    eval::validate_object_graph(program, object_index);
+    semantics::validate_object_graph(program, object_index);
     // Frames for the object and everything before it (all possible callees).
     frames_.resize(static_cast<std::size_t>(object_index) + 1);
     for (int i = 0; i <= object_index; ++i)
@@ -209,7 +209,7 @@ private:
         if (i < 1 || i > static_cast<int>(target.size()))
         {
           return fail(
-            messages::kIndexOutOfRange, eval::index_write_location(*s.index, s.index_end));
+            messages::kIndexOutOfRange, semantics::index_write_location(*s.index, s.index_end));
         }
         double v;
         if (!eval(*s.value, f, v))
@@ -305,7 +305,7 @@ private:
         const std::span<double> array = array_span(n.array, f);
         if (i < 1 || i > static_cast<int>(array.size()))
         {
-          return fail(messages::kIndexOutOfRange, eval::first_instruction_location(*n.index));
+          return fail(messages::kIndexOutOfRange, semantics::first_instruction_location(*n.index));
         }
         if (n.array.kind == ast::ArrayKind::Local &&
             f.local_set[f.local_offset[n.array.local] + i - 1] != f.generation)
@@ -618,11 +618,11 @@ private:
       n.s ? array_span(*n.s, f) : std::span<double>(f.s).first(callee.s.size());
     if (!array_assigned(n.x, f))
     {
-      return fail(messages::kUnassignedArray, eval::object_call_x_check_location(n));
+      return fail(messages::kUnassignedArray, semantics::object_call_x_check_location(n));
     }
     if (!array_assigned(n.a, f) || (n.s && !array_assigned(*n.s, f)))
     {
-      return fail(messages::kUnassignedArray, eval::object_call_as_check_location(n, e.location));
+      return fail(messages::kUnassignedArray, semantics::object_call_as_check_location(n, e.location));
     }
     // The callee works on copies: what it does to its x[] and a[] does not leak back...
     std::copy(xs.begin(), xs.end(), callee.x.begin());

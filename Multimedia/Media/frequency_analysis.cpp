@@ -1,4 +1,4 @@
-#include "frequency_analysis.h"
+#include "Media/frequency_analysis.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,7 +1,7 @@
-#include "movie_encoder.h"
+#include "Media/movie_encoder.h"
 
-#include "program_runner.h"
-#include "wav_writer.h"
+#include "Media/program_runner.h"
+#include "Media/wav_writer.h"
 
 #include <charconv>
 #include <cmath>

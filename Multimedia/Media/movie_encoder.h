@@ -3,7 +3,7 @@
 // the ffmpeg program. The movie appears under its name only once ffmpeg has succeeded.
 #pragma once
 
-#include "movie_probe.h"
+#include "Media/movie_probe.h"
 
 #include <filesystem>
 #include <functional>

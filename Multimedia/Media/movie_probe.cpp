@@ -1,6 +1,6 @@
-#include "movie_probe.h"
+#include "Media/movie_probe.h"
 
-#include "program_runner.h"
+#include "Media/program_runner.h"
 
 #include <nlohmann/json.hpp>
 

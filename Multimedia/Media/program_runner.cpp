@@ -1,4 +1,4 @@
-#include "program_runner.h"
+#include "Media/program_runner.h"
 
 #include <cerrno>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "tone_synthesis.h"
+#include "Media/tone_synthesis.h"
 
 #include <algorithm>
 #include <cmath>

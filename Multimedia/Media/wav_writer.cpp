@@ -1,4 +1,4 @@
-#include "wav_writer.h"
+#include "Media/wav_writer.h"
 
 #include <sndfile.h>
 

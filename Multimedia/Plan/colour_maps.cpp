@@ -1,4 +1,4 @@
-#include "colour_maps.h"
+#include "Plan/colour_maps.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
-#include "colour_maps.h"
-#include "path.h"
-#include "unit_map.h"
+#include "Plan/colour_maps.h"
+#include "Plan/path.h"
+#include "Plan/unit_map.h"
 
 #include <nlohmann/json.hpp>
 

@@ -35,8 +35,8 @@
 // are errors: a typo must not be silently ignored.
 #pragma once
 
-#include "mapping_plan.h"
-#include "mapping_spec.h"
+#include "Plan/mapping_plan.h"
+#include "Plan/mapping_spec.h"
 
 #include <string>
 #include <vector>

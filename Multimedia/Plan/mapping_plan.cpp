@@ -2,11 +2,11 @@
 // spreadsheet cells and the animation frames. The order of the work: resolve every channel
 // (range, target, map), check the placing channels (world, dynamic, spreadsheet, fixed), then,
 // only when nothing is wrong, fill the samples.
-#include "mapping_plan.h"
+#include "Plan/mapping_plan.h"
 
-#include "colour_maps.h"
-#include "path.h"
-#include "unit_map.h"
+#include "Plan/colour_maps.h"
+#include "Plan/path.h"
+#include "Plan/unit_map.h"
 
 #include <algorithm>
 #include <cmath>

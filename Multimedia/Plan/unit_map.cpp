@@ -1,4 +1,4 @@
-#include "unit_map.h"
+#include "Plan/unit_map.h"
 
 #include "Compiler/model.h"
 #include "Eval/point_evaluator.h"

@@ -1,4 +1,4 @@
-#include "camera.h"
+#include "Render/camera.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // path on it. The checker squares make the plane's scale readable at a glance even at 240 px,
 // the range labels sit at the board's corners, and the way already travelled is drawn stronger
 // than the way ahead so a viewer sees the direction of motion in a single frame.
-#include "plot2d.h"
+#include "Render/plot2d.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "image.h"
+#include "Render/image.h"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
-#include "mesh_raster.h"
+#include "Render/mesh_raster.h"
 
-#include "render_parallel.h"
+#include "Render/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

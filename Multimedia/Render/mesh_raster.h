@@ -2,7 +2,7 @@
 // and the shading of a visible sample.
 #pragma once
 
-#include "mesh_setup.h"
+#include "Render/mesh_setup.h"
 
 #include <cstdint>
 #include <vector>

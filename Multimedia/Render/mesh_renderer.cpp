@@ -1,8 +1,8 @@
-#include "mesh_renderer.h"
+#include "Render/mesh_renderer.h"
 
-#include "mesh_raster.h"
-#include "mesh_setup.h"
-#include "render_parallel.h"
+#include "Render/mesh_raster.h"
+#include "Render/mesh_setup.h"
+#include "Render/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -21,8 +21,8 @@
 // over opaque shapes, the common case.
 #pragma once
 
-#include "camera.h"
-#include "image.h"
+#include "Render/camera.h"
+#include "Render/image.h"
 
 #include <array>
 #include <cstddef>

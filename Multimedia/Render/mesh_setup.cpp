@@ -1,6 +1,6 @@
-#include "mesh_setup.h"
+#include "Render/mesh_setup.h"
 
-#include "render_parallel.h"
+#include "Render/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

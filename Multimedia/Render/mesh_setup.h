@@ -2,8 +2,8 @@
 // space, clipped, projected to the supersampled picture and snapped to fixed point.
 #pragma once
 
-#include "camera.h"
-#include "mesh_renderer.h"
+#include "Render/camera.h"
+#include "Render/mesh_renderer.h"
 
 #include <cstdint>
 #include <string>

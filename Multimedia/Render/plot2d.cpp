@@ -1,4 +1,4 @@
-#include "plot2d.h"
+#include "Render/plot2d.h"
 
 #include <algorithm>
 #include <cmath>

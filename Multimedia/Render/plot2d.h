@@ -7,8 +7,8 @@
 // joins are round and no pixel is blended twice.
 #pragma once
 
-#include "image.h"
-#include "text.h"
+#include "Render/image.h"
+#include "Render/text.h"
 
 #include <cstddef>
 #include <optional>

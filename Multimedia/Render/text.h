@@ -4,7 +4,7 @@
 // crisp), with kerning where the font has it.
 #pragma once
 
-#include "image.h"
+#include "Render/image.h"
 
 #include <memory>
 #include <optional>

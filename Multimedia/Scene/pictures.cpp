@@ -1,7 +1,7 @@
-#include "pictures.h"
+#include "Scene/pictures.h"
 
-#include "mesh_renderer.h"
-#include "plot2d.h"
+#include "Render/mesh_renderer.h"
+#include "Render/plot2d.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,12 +5,12 @@
 // as a checkerboard with the path and the current point) and the path picture.
 #pragma once
 
-#include "mapping_plan.h"
-#include "section_mesh.h"
+#include "Plan/mapping_plan.h"
+#include "Scene/section_mesh.h"
 
-#include "camera.h"
-#include "image.h"
-#include "text.h"
+#include "Render/camera.h"
+#include "Render/image.h"
+#include "Render/text.h"
 
 #include <memory>
 #include <optional>

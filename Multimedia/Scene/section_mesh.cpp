@@ -1,7 +1,7 @@
-#include "section_mesh.h"
+#include "Scene/section_mesh.h"
 
-#include "colour_maps.h"
-#include "unit_map.h"
+#include "Plan/colour_maps.h"
+#include "Plan/unit_map.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 // `frepkit map`, so both produce the same geometry.
 #pragma once
 
-#include "mapping_plan.h"
-#include "unit_map.h"
+#include "Plan/mapping_plan.h"
+#include "Plan/unit_map.h"
 
 #include "Compiler/model.h"
 #include "Mesh/surface.h"

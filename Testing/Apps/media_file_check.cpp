@@ -6,9 +6,9 @@
 //   media_file_check movie FILE          -> "frames N rate R duration D width W height H audio 0|1
 //   audio_duration D"
 // Exit code 1 and a message when the file cannot be read.
-#include "frequency_analysis.h"
-#include "movie_probe.h"
-#include "wav_writer.h"
+#include "Media/frequency_analysis.h"
+#include "Media/movie_probe.h"
+#include "Media/wav_writer.h"
 
 #include <algorithm>
 #include <cmath>

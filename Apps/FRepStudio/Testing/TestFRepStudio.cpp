@@ -12,7 +12,7 @@
 #include "SpreadsheetPanel.h"
 #include "StudioMainWindow.h"
 #include "AnimationExport.h"
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
 #include "Language/parser.h"
 #include "Mesh/surface.h"

@@ -1,4 +1,4 @@
-// The PNG writer of a build without the stack (FREPKIT_ENABLE_VTK off: no OpenImageIO).
+// The PNG writer of a build without OpenImageIO.
 #include "png_writer.h"
 
 #include "user_error.h"
@@ -9,7 +9,7 @@ namespace frepkit
 void write_png(std::ostream&, std::int64_t, std::int64_t, const std::vector<std::uint8_t>&)
 {
   throw UserError(
-    ".png is not available in this build (FREPKIT_ENABLE_VTK is off: no OpenImageIO)");
+    ".png is not available in this build (it was built without OpenImageIO)");
 }
 
 } // namespace frepkit

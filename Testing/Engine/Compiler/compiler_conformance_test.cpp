@@ -7,7 +7,7 @@
 #include "conformance_runner.h"
 
 #include "Compiler/model.h"
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 #include "Eval/point_evaluator.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 #include "Compiler/dag.h"
 #include "Compiler/expr.h"
 #include "Compiler/model.h"
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
 #include "Language/parser.h"

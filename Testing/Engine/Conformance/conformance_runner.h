@@ -6,7 +6,7 @@
 
 #include "conformance_case.h"
 
-#include "Eval/interpreter.h"
+#include "Semantics/interpreter.h"
 #include "Language/ast.h"
 #include "Language/parser.h"
 

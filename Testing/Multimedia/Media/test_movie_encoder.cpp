@@ -1,8 +1,8 @@
 // The movie tests run the real ffmpeg and ffprobe: without them they fail (CI installs ffmpeg).
-#include "movie_encoder.h"
+#include "Media/movie_encoder.h"
 #include "test_support.h"
-#include "tone_synthesis.h"
-#include "wav_writer.h"
+#include "Media/tone_synthesis.h"
+#include "Media/wav_writer.h"
 
 #include <gtest/gtest.h>
 

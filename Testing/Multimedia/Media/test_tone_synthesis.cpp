@@ -1,5 +1,5 @@
-#include "frequency_analysis.h"
-#include "tone_synthesis.h"
+#include "Media/frequency_analysis.h"
+#include "Media/tone_synthesis.h"
 
 #include <gtest/gtest.h>
 

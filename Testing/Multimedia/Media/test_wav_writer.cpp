@@ -1,6 +1,6 @@
 #include "test_support.h"
-#include "tone_synthesis.h"
-#include "wav_writer.h"
+#include "Media/tone_synthesis.h"
+#include "Media/wav_writer.h"
 
 #include <gtest/gtest.h>
 

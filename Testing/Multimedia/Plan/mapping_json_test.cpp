@@ -1,4 +1,4 @@
-#include "mapping_json.h"
+#include "Plan/mapping_json.h"
 
 #include "example_mapping.h"
 

@@ -1,5 +1,5 @@
-#include "mapping_json.h"
-#include "mapping_plan.h"
+#include "Plan/mapping_json.h"
+#include "Plan/mapping_plan.h"
 
 #include "example_mapping.h"
 

@@ -1,4 +1,4 @@
-#include "path.h"
+#include "Plan/path.h"
 
 #include <gtest/gtest.h>
 

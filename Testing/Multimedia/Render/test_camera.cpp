@@ -1,5 +1,5 @@
 // fit_box: the documented directions, and a box's corners inside the picture from any view.
-#include "camera.h"
+#include "Render/camera.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Image: the colour conventions (linear inside, sRGB out), straight-alpha compositing and the
 // premultiplied box filter of supersampling.
-#include "image.h"
+#include "Render/image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The mesh renderer: coverage against the analytic projection, shading, clipping, the depth
 // buffer, transparency, determinism across thread counts, and bad input that must not crash.
-#include "camera.h"
-#include "mesh_renderer.h"
+#include "Render/camera.h"
+#include "Render/mesh_renderer.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

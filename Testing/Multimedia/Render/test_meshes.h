@@ -1,7 +1,7 @@
 // Test helpers: meshes built in code, and pictures for a human to look at.
 #pragma once
 
-#include "image.h"
+#include "Render/image.h"
 
 #include <cmath>
 #include <cstdint>

@@ -1,11 +1,11 @@
 // Pictures for a human to look at (FREPKIT_RENDER_CHECK_DIR=dir writes dir/*.ppm): a shaded
 // sphere, an animation-like frame with the path inset, the standalone path picture, and text.
 // The assertions here are only that each picture was made and has content where expected.
-#include "camera.h"
-#include "mesh_renderer.h"
-#include "plot2d.h"
+#include "Render/camera.h"
+#include "Render/mesh_renderer.h"
+#include "Render/plot2d.h"
 #include "test_meshes.h"
-#include "text.h"
+#include "Render/text.h"
 
 #include <gtest/gtest.h>
 

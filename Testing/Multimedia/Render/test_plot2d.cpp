@@ -1,6 +1,6 @@
 // 2-D drawing: analytic anti-aliasing gives the right areas, and the inset puts its squares,
 // path and marker where the plane coordinates say.
-#include "plot2d.h"
+#include "Render/plot2d.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Text: UTF-8 decoding, font loading errors, ink only inside the reported box, anchors.
-#include "text.h"
+#include "Render/text.h"
 
 #include <gtest/gtest.h>
 

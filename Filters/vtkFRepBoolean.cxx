@@ -1,6 +1,7 @@
 #include "vtkFRepBoolean.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -11,7 +12,9 @@
 #include "Compiler/combine.h"
 
 #include <algorithm>
+#include <array>
 #include <exception>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -91,84 +94,32 @@ void vtkFRepBoolean::SetSourceConnection(vtkAlgorithmOutput* output)
 }
 
 //------------------------------------------------------------------------------
-void vtkFRepBoolean::SetInputData(int port, vtkDataObject* object)
-{
-  this->SetInputDataObject(port, object);
-}
-
-//------------------------------------------------------------------------------
 void vtkFRepBoolean::SetSourceData(vtkDataObject* b)
 {
   this->SetInputDataObject(1, b);
 }
 
 //------------------------------------------------------------------------------
-vtkFRepObject* vtkFRepBoolean::GetOutput()
-{
-  return this->GetOutput(0);
-}
-
-//------------------------------------------------------------------------------
-vtkFRepObject* vtkFRepBoolean::GetOutput(int port)
-{
-  return vtkFRepObject::SafeDownCast(this->GetOutputDataObject(port));
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepBoolean::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkFRepObject");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepBoolean::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkFRepObject");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkFRepBoolean::ProcessRequest(vtkInformation* request,
+int vtkFRepBoolean::RequestInformation(vtkInformation*,
   vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  // The output's metadata from the operands' keys (nothing upstream is executed): every
+  // coordinate free, names and intervals as CopyCoordinates gives them. Operands that cannot be
+  // combined publish no object; RequestData reports why, once.
+  vtkFRepInformation::Metadata a;
+  vtkFRepInformation::Metadata b;
+  if (!vtkFRepInformation::Get(inInfo[0]->GetInformationObject(0), a) ||
+    !vtkFRepInformation::Get(inInfo[1]->GetInformationObject(0), b) ||
+    (this->Operation != VTK_CARTESIAN_PRODUCT && a.GetDimension() != b.GetDimension()))
   {
-    return this->RequestDataObject(request, inInfo, outInfo);
+    return 1;
   }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inInfo, outInfo);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inInfo, outInfo);
-  }
-  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepBoolean::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  vtkInformation* info = outInfo->GetInformationObject(0);
-  if (!vtkFRepObject::GetData(info))
-  {
-    vtkNew<vtkFRepObject> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepBoolean::RequestInformation(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  // Every rank builds the whole object: it cannot be split into pieces or sent between ranks.
-  outInfo->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  vtkFRepInformation::Metadata output;
+  output.ObjectName = std::string(frep::operation_name(EngineOperation(this->Operation))) + "(" +
+    a.ObjectName + ", " + b.ObjectName + ")";
+  this->CombineCoordinates(a, b, output);
+  vtkFRepInformation::Set(outInfo->GetInformationObject(0), output);
   return 1;
 }
 
@@ -232,33 +183,46 @@ int vtkFRepBoolean::RequestData(vtkInformation*,
     return 1;
   }
   output->SetModel(combined.model);
-  this->CopyCoordinates(a, b, output);
+  vtkFRepInformation::Metadata described[2];
+  vtkFRepInformation::Describe(a, described[0]);
+  vtkFRepInformation::Describe(b, described[1]);
+  vtkFRepInformation::Metadata coordinates;
+  this->CombineCoordinates(described[0], described[1], coordinates);
+  for (int i = 0; i < output->GetModelDimension() && i < coordinates.GetModelDimension(); ++i)
+  {
+    output->SetCoordinateName(i, coordinates.Names[i]);
+    output->SetCoordinateRange(i, coordinates.Ranges[i][0], coordinates.Ranges[i][1]);
+  }
   return 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkFRepBoolean::CopyCoordinates(vtkFRepObject* a,
-  vtkFRepObject* b,
-  vtkFRepObject* output) const
+void vtkFRepBoolean::CombineCoordinates(const vtkFRepInformation::Metadata& a,
+  const vtkFRepInformation::Metadata& b,
+  vtkFRepInformation::Metadata& output) const
 {
   const bool product = this->Operation == VTK_CARTESIAN_PRODUCT;
+  const int dimension = product ? a.GetDimension() + b.GetDimension() : a.GetDimension();
   std::set<std::string> taken;
-  for (int i = 0; i < output->GetModelDimension(); ++i)
+  output.Names.clear();
+  output.Ranges.clear();
+  output.FixedValues.assign(dimension, std::numeric_limits<double>::quiet_NaN());
+  output.FreeCoordinates.clear();
+  output.Parameters.clear();
+  for (int i = 0; i < dimension; ++i)
   {
     // The input and its axis this coordinate comes from.
-    vtkFRepObject* from = product && i >= a->GetDimension() ? b : a;
-    const int axis = from == b ? i - a->GetDimension() : i;
-    const int coordinate = from->GetFreeCoordinate(axis);
-    double range[2];
-    from->GetCoordinateRange(coordinate, range);
+    const vtkFRepInformation::Metadata& from = product && i >= a.GetDimension() ? b : a;
+    const int axis = &from == &b ? i - a.GetDimension() : i;
+    const int coordinate = from.FreeCoordinates[axis];
+    std::array<double, 2> range = from.Ranges[coordinate];
     if (!product)
     {
-      double other[2];
-      b->GetCoordinateRange(b->GetFreeCoordinate(axis), other);
+      const std::array<double, 2>& other = b.Ranges[b.FreeCoordinates[axis]];
       range[0] = std::min(range[0], other[0]);
       range[1] = std::max(range[1], other[1]);
     }
-    std::string name = from->GetCoordinateName(coordinate);
+    std::string name = from.Names[coordinate];
     if (taken.count(name))
     {
       name = "x" + std::to_string(i + 1);
@@ -268,8 +232,9 @@ void vtkFRepBoolean::CopyCoordinates(vtkFRepObject* a,
       }
     }
     taken.insert(name);
-    output->SetCoordinateName(i, name);
-    output->SetCoordinateRange(i, range[0], range[1]);
+    output.Names.push_back(name);
+    output.Ranges.push_back(range);
+    output.FreeCoordinates.push_back(i);
   }
 }
 

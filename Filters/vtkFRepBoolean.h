@@ -32,25 +32,29 @@
  * dimensions and names, and the output is empty (an initialised vtkFRepObject without a model).
  * The filter still returns success, so that VTK adds no second, position-less error.
  *
- * Every rank of a parallel run builds the whole object (CAN_HANDLE_PIECE_REQUEST), as
- * vtkHyperFunSource does.
+ * PIPELINE: RequestInformation combines the operands' vtkFRepInformation keys into the output's
+ * (dimension, names, intervals, the object name) without executing anything upstream; operands
+ * it can tell do not fit (no object, different dimensions) publish no object there and are
+ * reported by RequestData. Every rank of a parallel run builds the whole object
+ * (CAN_HANDLE_PIECE_REQUEST, see vtkFRepObjectAlgorithm).
  *
- * @sa vtkFRepObject vtkHyperFunSource vtkFRepSlice
+ * @sa vtkFRepObject vtkFRepObjectAlgorithm vtkFRepInformation vtkHyperFunSource vtkFRepSlice
  */
 #ifndef vtkFRepBoolean_h
 #define vtkFRepBoolean_h
 
 #include "FRepKitFiltersModule.h" // for export macro
-#include "vtkAlgorithm.h"
+#include "vtkFRepInformation.h" // for vtkFRepInformation::Metadata
+#include "vtkFRepObjectAlgorithm.h"
 
 class vtkAlgorithmOutput;
 class vtkFRepObject;
 
-class FREPKITFILTERS_EXPORT vtkFRepBoolean : public vtkAlgorithm
+class FREPKITFILTERS_EXPORT vtkFRepBoolean : public vtkFRepObjectAlgorithm
 {
 public:
   static vtkFRepBoolean* New();
-  vtkTypeMacro(vtkFRepBoolean, vtkAlgorithm);
+  vtkTypeMacro(vtkFRepBoolean, vtkFRepObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum OperationType
@@ -107,26 +111,9 @@ public:
    * same as SetInputConnection(1, ...) / SetInputData(1, b). The Data forms take an object
    * without a pipeline connection (e.g. a sliced copy).
    */
-  void SetInputData(vtkDataObject* a) { this->SetInputData(0, a); }
-  void SetInputData(int port, vtkDataObject* object);
   void SetSourceConnection(vtkAlgorithmOutput* output);
   void SetSourceData(vtkDataObject* b);
   ///@}
-
-  ///@{
-  /**
-   * The output.
-   */
-  vtkFRepObject* GetOutput();
-  vtkFRepObject* GetOutput(int port);
-  ///@}
-
-  /**
-   * Dispatches REQUEST_DATA_OBJECT, REQUEST_INFORMATION and REQUEST_DATA.
-   */
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
 
 protected:
   /**
@@ -136,12 +123,8 @@ protected:
   vtkFRepBoolean();
   ~vtkFRepBoolean() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-
-  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Operation = VTK_UNION;
   double BlendDisplacement = 1.0;
@@ -151,8 +134,13 @@ private:
   vtkFRepBoolean(const vtkFRepBoolean&) = delete;
   void operator=(const vtkFRepBoolean&) = delete;
 
-  // Names and intervals of the output's coordinates, from the inputs (see the class comment).
-  void CopyCoordinates(vtkFRepObject* a, vtkFRepObject* b, vtkFRepObject* output) const;
+#ifndef __VTK_WRAP__
+  // Names and intervals of the output's coordinates (all free), from the operands' metadata
+  // (see the class comment); used by RequestInformation and RequestData alike.
+  void CombineCoordinates(const vtkFRepInformation::Metadata& a,
+    const vtkFRepInformation::Metadata& b,
+    vtkFRepInformation::Metadata& output) const;
+#endif
 };
 
 #endif

@@ -1,12 +1,11 @@
 #include "vtkFRepSampler.h"
 
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
+#include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
-#include "vtkInformationExecutivePortKey.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -41,15 +40,6 @@ constexpr vtkIdType SlabSamples = vtkIdType(1) << 16;
 constexpr std::size_t GradientChunk = 1024;
 
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-
-// Every rank builds the whole object: ask the producer for piece 0 of 1, always the same
-// request so that the information pass and the data pass need one execution upstream only.
-void RequestWholeObject(vtkInformation* inInfo)
-{
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-}
 
 // "file:line:col: error: message" for error id `id` of `tape` (1-based), as the policy wants.
 std::string DescribeError(const frep::Tape& tape, std::uint32_t id, const vtkFRepObject* object)
@@ -147,32 +137,14 @@ int vtkFRepSampler::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-vtkFRepObject* vtkFRepSampler::UpdateInput(vtkInformation* inInfo)
-{
-  if (!inInfo)
-  {
-    return nullptr;
-  }
-  vtkExecutive* producer = nullptr;
-  int port = 0;
-  vtkExecutive::PRODUCER()->Get(inInfo, producer, port);
-  if (auto* pipeline = vtkStreamingDemandDrivenPipeline::SafeDownCast(producer))
-  {
-    RequestWholeObject(inInfo);
-    pipeline->Update(port);
-  }
-  return vtkFRepObject::GetData(inInfo);
-}
-
-//------------------------------------------------------------------------------
-bool vtkFRepSampler::PlanGrid(vtkFRepObject* object, std::string& problem)
+bool vtkFRepSampler::PlanGrid(const vtkFRepInformation::Metadata& object, std::string& problem)
 {
   Internals& in = *this->Internal;
   std::ostringstream why;
-  const int dimension = object->GetDimension();
+  const int dimension = object.GetDimension();
   if (dimension != 2 && dimension != 3)
   {
-    why << object->GetObjectName() << " has " << dimension
+    why << object.ObjectName << " has " << dimension
         << " free coordinates; the sampler needs 2 or 3 (fix the others with vtkFRepSlice)";
     problem = why.str();
     return false;
@@ -206,7 +178,6 @@ bool vtkFRepSampler::PlanGrid(vtkFRepObject* object, std::string& problem)
     return false;
   }
 
-  const vtkFRepObject::EvaluationDescription description = object->GetEvaluationDescription();
   for (int a = 0; a < 3; ++a)
   {
     if (a >= dimension)
@@ -217,16 +188,17 @@ bool vtkFRepSampler::PlanGrid(vtkFRepObject* object, std::string& problem)
     }
     double lo = this->ModelBounds[2 * a];
     double hi = this->ModelBounds[2 * a + 1];
+    const int coordinate = object.FreeCoordinates[a];
     if (lo > hi) // unset: the object's interval
     {
-      lo = description.Ranges[a][0];
-      hi = description.Ranges[a][1];
+      lo = object.Ranges[coordinate][0];
+      hi = object.Ranges[coordinate][1];
     }
     const double spacing = dims[a] > 1 ? (hi - lo) / (dims[a] - 1) : 1.0;
     if (!std::isfinite(lo) || !std::isfinite(hi) || !std::isfinite(spacing) ||
       !(spacing > 0.0))
     {
-      why << "axis " << a << " (" << description.Names[a] << "): cannot place " << dims[a]
+      why << "axis " << a << " (" << object.Names[coordinate] << "): cannot place " << dims[a]
           << " samples in [" << lo << ", " << hi << "]"
           << (std::isfinite(lo) && std::isfinite(hi) ? " (zero width)" : " (not finite)");
       problem = why.str();
@@ -251,9 +223,12 @@ int vtkFRepSampler::RequestInformation(vtkInformation*,
 {
   Internals& in = *this->Internal;
   in.Valid = false;
-  vtkFRepObject* object = this->UpdateInput(inputVector[0]->GetInformationObject(0));
-  // An empty object was reported upstream: an empty image, quietly.
-  if (object && object->HasModel())
+  // The grid comes from the input's metadata keys: nothing upstream is executed. No keys: an
+  // empty object, reported upstream: an empty image, quietly.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkFRepInformation::CompleteInputInformation(inInfo); // an input given as data
+  vtkFRepInformation::Metadata object;
+  if (vtkFRepInformation::Get(inInfo, object))
   {
     std::string problem;
     in.Valid = this->PlanGrid(object, problem);
@@ -270,6 +245,7 @@ int vtkFRepSampler::RequestInformation(vtkInformation*,
     std::fill(in.Spacing, in.Spacing + 3, 1.0);
   }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkFRepInformation::Remove(outInfo); // copied from the input by the executive: not an image's
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), in.WholeExtent, 6);
   outInfo->Set(vtkDataObject::ORIGIN(), in.Origin, 3);
   outInfo->Set(vtkDataObject::SPACING(), in.Spacing, 3);
@@ -283,7 +259,7 @@ int vtkFRepSampler::RequestUpdateExtent(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector*)
 {
-  RequestWholeObject(inputVector[0]->GetInformationObject(0));
+  vtkFRepInformation::RequestWholeObject(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 

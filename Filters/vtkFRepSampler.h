@@ -47,11 +47,12 @@
  * object whose dimension is not 2 or 3 is refused the same way. An empty input (an upstream
  * error, reported there) gives an empty image without a further message.
  *
- * PIPELINE: RequestInformation needs the object (its dimension and intervals give the whole
- * extent, origin and spacing), but a vtkFRepObject carries its metadata as data only. So the
- * sampler brings its input up to date during its own information pass (the upstream FRep
- * filters only compile or specialise: milliseconds), always requesting piece 0 of 1, since
- * every rank builds the whole object anyway. The output sets CAN_PRODUCE_SUB_EXTENT and only
+ * PIPELINE: RequestInformation plans the grid (whole extent, origin and spacing) from the
+ * object's dimension and intervals, which its producer publishes as vtkFRepInformation keys in
+ * its own information pass: nothing upstream executes before the data pass (an input given as
+ * data, SetInputData, is described from the object). The sampler always requests piece 0 of 1
+ * of its input, since every rank builds the whole object anyway. The output sets
+ * CAN_PRODUCE_SUB_EXTENT and only
  * the requested UPDATE_EXTENT is computed: an image split over ranks or streamed in pieces has
  * exactly the values of the whole image.
  *
@@ -68,6 +69,7 @@
 #define vtkFRepSampler_h
 
 #include "FRepKitFiltersModule.h" // for export macro
+#include "vtkFRepInformation.h" // for vtkFRepInformation::Metadata
 #include "vtkImageAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -222,11 +224,9 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
-  // Brings the input object up to date (see PIPELINE in the class description).
-  vtkFRepObject* UpdateInput(vtkInformation* inInfo);
-  // Checks the request against the object and fills the grid of Internals; false (with the
-  // reason in `problem`) when it must be refused. `object` is never empty here.
-  bool PlanGrid(vtkFRepObject* object, std::string& problem);
+  // Checks the request against the object's metadata and fills the grid of Internals; false
+  // (with the reason in `problem`) when it must be refused.
+  bool PlanGrid(const vtkFRepInformation::Metadata& object, std::string& problem);
   // Evaluates the extent `extent` into `output` (arrays of type T). False when aborted.
   template <typename T>
   bool Sample(vtkFRepObject* object, vtkImageData* output, const int extent[6]);

@@ -1,5 +1,6 @@
 #include "vtkFRepSlice.h"
 
+#include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -15,14 +16,16 @@ vtkStandardNewMacro(vtkFRepSlice);
 
 namespace
 {
+using Metadata = vtkFRepInformation::Metadata;
+
 // "x1 (coordinate 0)": how a coordinate is named in messages.
-std::string Describe(vtkFRepObject* object, int coordinate)
+std::string Describe(const Metadata* object, int coordinate)
 {
   return object->GetCoordinateName(coordinate) + " (coordinate " + std::to_string(coordinate) +
     ")";
 }
 
-std::string AllNames(vtkFRepObject* object)
+std::string AllNames(const Metadata* object)
 {
   std::string names;
   for (int c = 0; c < object->GetModelDimension(); ++c)
@@ -34,7 +37,7 @@ std::string AllNames(vtkFRepObject* object)
 
 // The model coordinate called `name`, or -1 (with a problem reported) when no coordinate or
 // several have that name.
-int FindByName(vtkFRepObject* object, const std::string& name, std::vector<std::string>& problems)
+int FindByName(const Metadata* object, const std::string& name, std::vector<std::string>& problems)
 {
   int found = -1;
   int matches = 0;
@@ -174,86 +177,60 @@ int vtkFRepSlice::GetNumberOfFixedValues() const
 }
 
 //------------------------------------------------------------------------------
-void vtkFRepSlice::SetInputData(vtkDataObject* input)
-{
-  this->SetInputDataObject(0, input);
-}
-
-//------------------------------------------------------------------------------
-vtkFRepObject* vtkFRepSlice::GetOutput()
-{
-  return this->GetOutput(0);
-}
-
-//------------------------------------------------------------------------------
-vtkFRepObject* vtkFRepSlice::GetOutput(int port)
-{
-  return vtkFRepObject::SafeDownCast(this->GetOutputDataObject(port));
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepSlice::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkFRepObject");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepSlice::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkFRepObject");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkFRepSlice::ProcessRequest(vtkInformation* request,
+int vtkFRepSlice::RequestInformation(vtkInformation*,
   vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  // The output's metadata is the input's with the requests applied: fixed coordinates leave
+  // the free ones, the order is FreeCoordinateOrder's. Nothing upstream is executed.
+  Metadata metadata;
+  if (!vtkFRepInformation::Get(inInfo[0]->GetInformationObject(0), metadata))
   {
-    return this->RequestDataObject(request, inInfo, outInfo);
+    return 1; // an empty input: an empty output, quietly
   }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  std::map<int, double> fixed;
+  std::vector<int> order;
+  if (!this->Resolve(metadata, fixed, order).empty())
   {
-    return this->RequestInformation(request, inInfo, outInfo);
+    return 1; // no object: RequestData reports the problems, once
   }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inInfo, outInfo);
-  }
-  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-}
-
-//------------------------------------------------------------------------------
-int vtkFRepSlice::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  vtkInformation* info = outInfo->GetInformationObject(0);
-  if (!vtkFRepObject::GetData(info))
-  {
-    vtkNew<vtkFRepObject> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
+  vtkFRepInformation::Set(outInfo->GetInformationObject(0), Apply(metadata, fixed, order));
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkFRepSlice::RequestInformation(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
+vtkFRepInformation::Metadata vtkFRepSlice::Apply(
+  const Metadata& input, const std::map<int, double>& fixed, const std::vector<int>& order)
 {
-  // Like the source: every rank makes the whole (indivisible) object.
-  outInfo->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  return 1;
+  Metadata output = input;
+  for (const auto& [c, value] : fixed)
+  {
+    output.FixedValues[c] = value;
+  }
+  if (!order.empty())
+  {
+    output.FreeCoordinates = order;
+  }
+  else
+  {
+    output.FreeCoordinates.clear();
+    for (int c : input.FreeCoordinates)
+    {
+      if (fixed.count(c) == 0)
+      {
+        output.FreeCoordinates.push_back(c);
+      }
+    }
+  }
+  return output;
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> vtkFRepSlice::Resolve(vtkFRepObject* input,
+std::vector<std::string> vtkFRepSlice::Resolve(const Metadata& metadata,
   std::map<int, double>& fixed,
   std::vector<int>& order) const
 {
+  const Metadata* input = &metadata;
   std::vector<std::string> problems;
   const int n = input->GetModelDimension();
 
@@ -269,7 +246,7 @@ std::vector<std::string> vtkFRepSlice::Resolve(vtkFRepObject* input,
     if (input->IsCoordinateFixed(c))
     {
       std::ostringstream s;
-      s << Describe(input, c) << " is already fixed by the input (to " << input->GetFixedValue(c)
+      s << Describe(input, c) << " is already fixed by the input (to " << input->FixedValues[c]
         << "); only free coordinates can be fixed";
       problems.push_back(s.str());
       return;
@@ -288,7 +265,7 @@ std::vector<std::string> vtkFRepSlice::Resolve(vtkFRepObject* input,
     if (c < 0 || c >= n)
     {
       problems.push_back("SetFixedValue: coordinate " + std::to_string(c) + " does not exist; " +
-        input->GetObjectName() + " has " + std::to_string(n) + " coordinates, 0.." +
+        input->ObjectName + " has " + std::to_string(n) + " coordinates, 0.." +
         std::to_string(n - 1) + " (" + AllNames(input) + ")");
       continue;
     }
@@ -335,7 +312,7 @@ std::vector<std::string> vtkFRepSlice::Resolve(vtkFRepObject* input,
     {
       std::ostringstream s;
       s << "FreeCoordinateOrder names " << Describe(input, c) << ", which is fixed (to "
-        << (fixed.count(c) ? fixed[c] : input->GetFixedValue(c))
+        << (fixed.count(c) ? fixed[c] : input->FixedValues[c])
         << (fixed.count(c) ? ")" : " by the input)");
       problems.push_back(s.str());
       continue;
@@ -377,9 +354,11 @@ int vtkFRepSlice::RequestData(vtkInformation*,
     return 1;
   }
 
+  Metadata metadata;
+  vtkFRepInformation::Describe(input, metadata);
   std::map<int, double> fixed;
   std::vector<int> order;
-  const std::vector<std::string> problems = this->Resolve(input, fixed, order);
+  const std::vector<std::string> problems = this->Resolve(metadata, fixed, order);
   if (!problems.empty())
   {
     std::ostringstream message;

@@ -37,16 +37,21 @@
  * An empty input (for example a vtkHyperFunSource with a parse error, which has reported it
  * already) gives an empty output without any further message (vtkDebugMacro only).
  *
- * Every rank of a parallel run builds the whole object (CAN_HANDLE_PIECE_REQUEST), as
- * vtkHyperFunSource does: an FRep object cannot be split into pieces.
+ * PIPELINE: RequestInformation resolves the requests against the input's vtkFRepInformation
+ * keys and publishes the output's (the fixed coordinates leave the free ones, the order is
+ * FreeCoordinateOrder's), without executing anything upstream; requests that do not resolve
+ * publish no object there and are reported by RequestData. Every rank of a parallel run builds
+ * the whole object (CAN_HANDLE_PIECE_REQUEST, see vtkFRepObjectAlgorithm): an FRep object cannot
+ * be split into pieces.
  *
- * @sa vtkFRepObject vtkHyperFunSource vtkFRepSampler
+ * @sa vtkFRepObject vtkFRepObjectAlgorithm vtkFRepInformation vtkHyperFunSource vtkFRepSampler
  */
 #ifndef vtkFRepSlice_h
 #define vtkFRepSlice_h
 
 #include "FRepKitFiltersModule.h" // for export macro
-#include "vtkAlgorithm.h"
+#include "vtkFRepInformation.h" // for vtkFRepInformation::Metadata
+#include "vtkFRepObjectAlgorithm.h"
 
 #include <map>    // for std::map
 #include <string> // for std::string
@@ -54,11 +59,11 @@
 
 class vtkFRepObject;
 
-class FREPKITFILTERS_EXPORT vtkFRepSlice : public vtkAlgorithm
+class FREPKITFILTERS_EXPORT vtkFRepSlice : public vtkFRepObjectAlgorithm
 {
 public:
   static vtkFRepSlice* New();
-  vtkTypeMacro(vtkFRepSlice, vtkAlgorithm);
+  vtkTypeMacro(vtkFRepSlice, vtkFRepObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -103,22 +108,6 @@ public:
   vtkGetStringMacro(FreeCoordinateOrder);
   ///@}
 
-  ///@{
-  /**
-   * The input (a vtkFRepObject) without a pipeline connection, and the output.
-   */
-  void SetInputData(vtkDataObject* input);
-  vtkFRepObject* GetOutput();
-  vtkFRepObject* GetOutput(int port);
-  ///@}
-
-  /**
-   * Dispatches REQUEST_DATA_OBJECT, REQUEST_INFORMATION and REQUEST_DATA.
-   */
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
-
 protected:
   /**
    * Defaults: nothing fixed, no FreeCoordinateOrder; one input port and one output port, both
@@ -127,12 +116,8 @@ protected:
   vtkFRepSlice();
   ~vtkFRepSlice() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-
-  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::map<int, double> FixedValues;               // by model coordinate
   std::map<std::string, double> FixedValuesByName; // by name, resolved on execution
@@ -142,11 +127,17 @@ private:
   vtkFRepSlice(const vtkFRepSlice&) = delete;
   void operator=(const vtkFRepSlice&) = delete;
 
-  // Resolves the requests against `input`: the coordinates to fix and the new order of the
-  // free ones (empty = unchanged). Returns the problems found (empty = valid).
-  std::vector<std::string> Resolve(vtkFRepObject* input,
+#ifndef __VTK_WRAP__
+  // Resolves the requests against the input's metadata: the coordinates to fix and the new
+  // order of the free ones (empty = unchanged). Returns the problems found (empty = valid).
+  std::vector<std::string> Resolve(const vtkFRepInformation::Metadata& input,
     std::map<int, double>& fixed,
     std::vector<int>& order) const;
+  // The output's metadata: `input` with `fixed` and `order` (from Resolve) applied.
+  static vtkFRepInformation::Metadata Apply(const vtkFRepInformation::Metadata& input,
+    const std::map<int, double>& fixed,
+    const std::vector<int>& order);
+#endif
 };
 
 #endif

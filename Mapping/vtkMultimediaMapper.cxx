@@ -6,6 +6,7 @@
 #include "Scene/section_mesh.h"
 #include "Media/tone_synthesis.h"
 
+#include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkFRepPolygonizer.h"
 
@@ -14,11 +15,9 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataAssembly.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationExecutivePortKey.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -58,37 +57,32 @@ struct vtkMultimediaMapper::Internals
 namespace
 {
 
-void RequestWholeObject(vtkInformation* inInfo)
-{
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-}
-
 // The object's fixed coordinates join the mapping as fixed channels, so a mapping written for
 // the free coordinates of a slice applies to it.
-bool CompleteSpec(vtkFRepObject* object, frep::mapping::Spec& spec, std::string& problem)
+bool CompleteSpec(
+  const vtkFRepInformation::Metadata& object, frep::mapping::Spec& spec, std::string& problem)
 {
-  for (int i = 0; i < object->GetModelDimension(); ++i)
+  for (int i = 0; i < object.GetModelDimension(); ++i)
   {
-    const std::string name = object->GetCoordinateName(i);
+    const std::string name = object.GetCoordinateName(i);
     auto it = std::find_if(spec.coordinates.begin(),
       spec.coordinates.end(),
       [&](const frep::mapping::CoordinateMapping& c) { return c.name == name; });
-    if (!object->IsCoordinateFixed(i))
+    if (!object.IsCoordinateFixed(i))
     {
       continue;
     }
     if (it != spec.coordinates.end())
     {
       problem += "coordinates." + name + ": the input object has fixed it (at " +
-                 std::to_string(object->GetFixedValue(i)) + "); map only its free coordinates\n";
+                 std::to_string(object.FixedValues[i]) + "); map only its free coordinates\n";
       continue;
     }
     frep::mapping::CoordinateMapping fixed;
     fixed.name = name;
     frep::mapping::Channel channel;
     channel.type = frep::mapping::Channel::Type::Fixed;
-    channel.value = object->GetFixedValue(i);
+    channel.value = object.FixedValues[i];
     fixed.channels.push_back(channel);
     spec.coordinates.push_back(fixed);
   }
@@ -237,23 +231,13 @@ int vtkMultimediaMapper::RequestInformation(vtkInformation*,
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
   outInfo->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
 
-  // The plan (and so the time steps) depends on the object's coordinates: bring the object up
-  // to date now. FRep producers only parse, compile or specialise here (milliseconds).
+  // The plan (and so the time steps) depends on the object's coordinates, which its producer
+  // publishes as vtkFRepInformation keys in its own information pass: nothing upstream runs.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkFRepObject* object = nullptr;
-  if (inInfo)
-  {
-    vtkExecutive* producer = nullptr;
-    int port = 0;
-    vtkExecutive::PRODUCER()->Get(inInfo, producer, port);
-    if (auto* pipeline = vtkStreamingDemandDrivenPipeline::SafeDownCast(producer))
-    {
-      RequestWholeObject(inInfo);
-      pipeline->Update(port);
-    }
-    object = vtkFRepObject::GetData(inInfo);
-  }
-  if (!object || !object->HasModel())
+  vtkFRepInformation::Remove(outInfo); // copied from the input by the executive
+  vtkFRepInformation::CompleteInputInformation(inInfo); // an input given as data
+  vtkFRepInformation::Metadata object;
+  if (!vtkFRepInformation::Get(inInfo, object))
   {
     return 1; // reported upstream: an empty output, quietly
   }
@@ -287,12 +271,10 @@ int vtkMultimediaMapper::RequestInformation(vtkInformation*,
   }
   std::string problem;
   frep::mapping::ModelCoordinates coordinates;
-  for (int i = 0; i < object->GetModelDimension(); ++i)
+  for (int i = 0; i < object.GetModelDimension(); ++i)
   {
-    double range[2];
-    object->GetCoordinateRange(i, range);
-    coordinates.names.push_back(object->GetCoordinateName(i));
-    coordinates.intervals.push_back({ range[0], range[1] });
+    coordinates.names.push_back(object.Names[i]);
+    coordinates.intervals.push_back({ object.Ranges[i][0], object.Ranges[i][1] });
   }
   if (CompleteSpec(object, spec, problem))
   {
@@ -308,11 +290,11 @@ int vtkMultimediaMapper::RequestInformation(vtkInformation*,
   }
   if (!problem.empty())
   {
-    vtkErrorMacro(<< "the mapping does not fit " << object->GetObjectName() << ":\n"
+    vtkErrorMacro(<< "the mapping does not fit " << object.ObjectName << ":\n"
                   << problem << "the output is empty");
     return 1;
   }
-  in.Parameters = spec.parameters.empty() ? object->GetParameters() : spec.parameters;
+  in.Parameters = spec.parameters.empty() ? object.Parameters : spec.parameters;
   in.Valid = true;
   in.Sound.clear();
   in.SampleRate = spec.audio.sample_rate;
@@ -364,7 +346,7 @@ int vtkMultimediaMapper::RequestUpdateExtent(vtkInformation*,
   // Every rank builds the whole (indivisible) object; time is ours, not the source's.
   if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
   {
-    RequestWholeObject(inInfo);
+    vtkFRepInformation::RequestWholeObject(inInfo);
     inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
   }
   return 1;

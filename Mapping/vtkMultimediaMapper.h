@@ -27,7 +27,10 @@
  * Time: with OutputMode Frame and a mapping with dynamic coordinates, RequestInformation
  * publishes TIME_STEPS (frame k at k / fps) and TIME_RANGE, and RequestData meshes the frame of
  * UPDATE_TIME_STEP (the last frame at or before it; the first frame without a request), so
- * ParaView's animation toolbar and VTK's time-aware writers play the animation.
+ * ParaView's animation toolbar and VTK's time-aware writers play the animation. The plan (and so
+ * TIME_STEPS) is made from the input's vtkFRepInformation keys (coordinate names, intervals,
+ * fixed values, a[]), which the FRep producers publish in their own information pass: the
+ * information pass executes nothing upstream.
  *
  * Pieces (CAN_HANDLE_PIECE_REQUEST): piece p of n meshes the samples i with i % n == p and
  * leaves the others as empty partitioned data sets (same structure and names on every rank), so
@@ -41,7 +44,7 @@
  * empty output. Progress is reported per sample; AbortExecute is honoured between samples and
  * inside the meshing.
  *
- * @sa vtkMultimediaMapping vtkSpreadsheetLayout vtkFRepObject vtkFRepPolygonizer
+ * @sa vtkMultimediaMapping vtkSpreadsheetLayout vtkFRepObject vtkFRepInformation vtkFRepPolygonizer
  */
 #ifndef vtkMultimediaMapper_h
 #define vtkMultimediaMapper_h

@@ -1,5 +1,6 @@
 #include "vtkHyperFunSource.h"
 
+#include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -19,7 +20,6 @@ vtkStandardNewMacro(vtkHyperFunSource);
 vtkHyperFunSource::vtkHyperFunSource()
 {
   this->SetNumberOfInputPorts(0);
-  this->SetNumberOfOutputPorts(1);
 }
 
 //------------------------------------------------------------------------------
@@ -129,66 +129,46 @@ void vtkHyperFunSource::RemoveAllCoordinateRanges()
 }
 
 //------------------------------------------------------------------------------
-vtkFRepObject* vtkHyperFunSource::GetOutput()
-{
-  return this->GetOutput(0);
-}
-
-//------------------------------------------------------------------------------
-vtkFRepObject* vtkHyperFunSource::GetOutput(int port)
-{
-  return vtkFRepObject::SafeDownCast(this->GetOutputDataObject(port));
-}
-
-//------------------------------------------------------------------------------
-int vtkHyperFunSource::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkFRepObject");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkHyperFunSource::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inInfo,
-  vtkInformationVector* outInfo)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inInfo, outInfo);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inInfo, outInfo);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inInfo, outInfo);
-  }
-  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-}
-
-//------------------------------------------------------------------------------
-int vtkHyperFunSource::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  vtkInformation* info = outInfo->GetInformationObject(0);
-  if (!vtkFRepObject::GetData(info))
-  {
-    vtkNew<vtkFRepObject> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkHyperFunSource::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outInfo)
 {
-  // Every rank builds the full object: it cannot be split into pieces or sent between ranks.
-  outInfo->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  // Parse and compile now (once: RequestData reuses the model) and describe the object, so
+  // that downstream filters need not execute this source to learn its coordinates.
+  std::shared_ptr<const frep::Model> model = this->UpdateModel();
+  if (model)
+  {
+    vtkNew<vtkFRepObject> described;
+    this->FillObject(model, described);
+    vtkFRepInformation::SetFromObject(outInfo->GetInformationObject(0), described);
+  }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const frep::Model> vtkHyperFunSource::UpdateModel()
+{
+  if (this->ModelTime.GetMTime() > this->GetMTime())
+  {
+    return this->CachedModel; // built since the last change (null: reported then)
+  }
+  this->BuildModel();
+  this->ModelTime.Modified();
+  return this->CachedModel;
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::FillObject(
+  const std::shared_ptr<const frep::Model>& model, vtkFRepObject* output) const
+{
+  output->SetModel(model);
+  for (int i = 0; i < model->x_dim(); ++i)
+  {
+    double range[2];
+    this->GetCoordinateRange(i, range);
+    output->SetCoordinateRange(i, range[0], range[1]);
+  }
+  output->SetParameters(this->Parameters);
 }
 
 //------------------------------------------------------------------------------
@@ -201,6 +181,8 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
     std::ifstream in(this->FileName, std::ios::binary);
     if (!in)
     {
+      this->CachedModel.reset();
+      this->CachedProgram.reset();
       vtkErrorMacro(<< this->FileName << ": cannot open the file");
       return nullptr;
     }
@@ -208,6 +190,8 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
     buffer << in.rdbuf();
     if (in.bad())
     {
+      this->CachedModel.reset();
+      this->CachedProgram.reset();
       vtkErrorMacro(<< this->FileName << ": cannot read the file");
       return nullptr;
     }
@@ -221,6 +205,8 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   }
   else
   {
+    this->CachedModel.reset();
+    this->CachedProgram.reset();
     vtkErrorMacro(<< "neither FileName nor ModelText is set");
     return nullptr;
   }
@@ -232,8 +218,10 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
     return this->CachedModel;
   }
   this->CachedModel.reset();
+  this->CachedProgram.reset();
 
   const frep::ParseResult parsed = frep::parse_program(text, sourceName);
+  this->CachedProgram = parsed.program;
   if (!parsed.ok())
   {
     for (const frep::Diagnostic& d : parsed.diagnostics)
@@ -303,19 +291,13 @@ int vtkHyperFunSource::RequestData(vtkInformation*,
   }
   output->Initialize();
 
-  std::shared_ptr<const frep::Model> model = this->BuildModel();
+  // Built by RequestInformation (unless the source changed since): no second parse.
+  std::shared_ptr<const frep::Model> model = this->UpdateModel();
   if (!model)
   {
     return 1; // the errors are reported; the output stays empty
   }
-  output->SetModel(model);
-  for (int i = 0; i < model->x_dim(); ++i)
-  {
-    double range[2];
-    this->GetCoordinateRange(i, range);
-    output->SetCoordinateRange(i, range[0], range[1]);
-  }
-  output->SetParameters(this->Parameters);
+  this->FillObject(model, output);
   if (model->a_dim() < this->GetNumberOfParameters())
   {
     vtkWarningMacro(<< model->name() << " has a[" << model->a_dim() << "] but "

@@ -19,17 +19,26 @@
  * vtkErrorMacro as "file:line:col: error: message" ("<string>" is the file name of ModelText),
  * and the output is left empty (an initialised vtkFRepObject without a model). Nothing crashes.
  *
- * Every rank of a parallel run builds the full object (CAN_HANDLE_PIECE_REQUEST is set): the
- * object cannot be split or sent between ranks. The parsed and compiled model is cached:
- * changing Parameters or ranges re-specialises it without parsing again.
+ PIPELINE: the program is read, parsed and compiled in RequestInformation, which publishes the
+ * object's metadata (dimension, coordinate names and intervals, a[]) as vtkFRepInformation keys,
+ * so that downstream filters plan their outputs without executing this source; diagnostics are
+ * reported there, once. The compiled model is cached until the source is modified (its MTime):
+ * RequestData reuses it without reading or parsing again, and after a change the program is
+ * read again but parsed again only when its text (or ObjectName) differs, so changing
+ * Parameters or ranges re-specialises the model without parsing. A file edited on disk is read
+ * again after Modified() (ParaView's Reload Files does that).
  *
- * @sa vtkFRepObject vtkFRepImplicitFunction
+ * Every rank of a parallel run builds the full object (CAN_HANDLE_PIECE_REQUEST is set, see
+ * vtkFRepObjectAlgorithm): the object cannot be split or sent between ranks.
+ *
+ * @sa vtkFRepObject vtkFRepObjectAlgorithm vtkFRepInformation vtkFRepImplicitFunction
  */
 #ifndef vtkHyperFunSource_h
 #define vtkHyperFunSource_h
 
 #include "FRepKitSourcesModule.h" // for export macro
-#include "vtkAlgorithm.h"
+#include "vtkFRepObjectAlgorithm.h"
+#include "vtkTimeStamp.h" // for vtkTimeStamp
 
 #include <array>  // for std::array
 #include <memory> // for std::shared_ptr
@@ -39,15 +48,19 @@
 namespace frep
 {
 class Model;
+namespace ast
+{
+struct Program;
+}
 }
 
 class vtkFRepObject;
 
-class FREPKITSOURCES_EXPORT vtkHyperFunSource : public vtkAlgorithm
+class FREPKITSOURCES_EXPORT vtkHyperFunSource : public vtkFRepObjectAlgorithm
 {
 public:
   static vtkHyperFunSource* New();
-  vtkTypeMacro(vtkHyperFunSource, vtkAlgorithm);
+  vtkTypeMacro(vtkHyperFunSource, vtkFRepObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -106,21 +119,6 @@ public:
   vtkGetVector2Macro(DefaultCoordinateRange, double);
   ///@}
 
-  ///@{
-  /**
-   * The output.
-   */
-  vtkFRepObject* GetOutput();
-  vtkFRepObject* GetOutput(int port);
-  ///@}
-
-  /**
-   * Dispatches REQUEST_DATA_OBJECT, REQUEST_INFORMATION and REQUEST_DATA.
-   */
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
-
 protected:
   /**
    * Defaults: no ModelText, FileName or ObjectName, no parameters, DefaultCoordinateRange
@@ -129,11 +127,20 @@ protected:
   vtkHyperFunSource();
   ~vtkHyperFunSource() override;
 
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /**
+   * The compiled model, brought up to date (see PIPELINE in the class description): null when
+   * the program cannot be read, parsed or compiled (reported once per change).
+   */
+  std::shared_ptr<const frep::Model> UpdateModel();
+
+  /**
+   * The parsed program of the last UpdateModel() (null when it did not parse), e.g. to list its
+   * objects.
+   */
+  std::shared_ptr<const frep::ast::Program> GetProgram() const { return this->CachedProgram; }
 
   char* ModelText = nullptr;
   char* FileName = nullptr;
@@ -150,8 +157,12 @@ private:
 
   // Reads, parses and compiles (or reuses the cached model); reports every diagnostic.
   std::shared_ptr<const frep::Model> BuildModel();
+  // Fills `output` with the model, the coordinate intervals and a[].
+  void FillObject(const std::shared_ptr<const frep::Model>& model, vtkFRepObject* output) const;
 
-  // The cached model and what it was built from.
+  // The cached model and program, what they were built from, and when (UpdateModel).
+  vtkTimeStamp ModelTime;
+  std::shared_ptr<const frep::ast::Program> CachedProgram;
   std::shared_ptr<const frep::Model> CachedModel;
   std::string CachedText;
   std::string CachedSourceName;

@@ -2,7 +2,7 @@
 # built against ParaView's VTK. Included after enable_testing() so that module tests register
 # with ctest (test names: <module>Cxx-<Test>, e.g. FRepKit::SourcesCxx-TestFRepObject).
 set(_frepkit_module_files)
-foreach(_frepkit_module_dir IN ITEMS Sources Filters Mapping)
+foreach(_frepkit_module_dir IN ITEMS Sources Filters IO Mapping)
   if(EXISTS "${PROJECT_SOURCE_DIR}/${_frepkit_module_dir}/vtk.module")
     list(APPEND _frepkit_module_files "${PROJECT_SOURCE_DIR}/${_frepkit_module_dir}/vtk.module")
   endif()

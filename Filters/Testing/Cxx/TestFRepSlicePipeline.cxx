@@ -1,7 +1,8 @@
 // vtkHyperFunSource (n-D) -> vtkFRepSlice -> vtkFRepSampler as one pipeline: the image equals
 // the n-D tape evaluated at the slice values; changing the slice value, the source's a[] or
-// the file re-executes it with new values; the source runs once per update; two pieces of
-// the image (as two MPI ranks would ask) together are the whole image; the 5-D homotopy of
+// the file re-executes it with new values; the information pass runs nobody; the source runs
+// once per update; two pieces of the image (as two MPI ranks would ask) together are the whole
+// image; the 5-D homotopy of
 // Examples/ sliced by name at (x4, x5) = (0.25, 0.75).
 #include "FRepKitSourcesTestHelpers.h"
 
@@ -110,6 +111,10 @@ int TestFRepSlicePipeline(int, char*[])
   reference->SetModelText(Model4D);
   reference->Update();
   vtkFRepObject* full = reference->GetOutput();
+
+  // --- the information pass runs nobody (the grid comes from information keys)
+  sampler->UpdateInformation();
+  FREPKIT_CHECK(failures, sourceRuns->Count == 0 && samplerRuns->Count == 0);
 
   // --- one update runs everything once, with the slice's values
   sampler->Update();

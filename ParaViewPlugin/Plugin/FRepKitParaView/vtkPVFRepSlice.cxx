@@ -2,12 +2,9 @@
 
 #include "vtkFRepObject.h"
 
-#include "vtkExecutive.h"
 #include "vtkInformation.h"
-#include "vtkInformationExecutivePortKey.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cmath>
 #include <limits>
@@ -48,48 +45,9 @@ double vtkPVFRepSlice::GetValue(int coordinate) const
 }
 
 //------------------------------------------------------------------------------
-int vtkPVFRepSlice::RequestInformation(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+std::map<int, double> vtkPVFRepSlice::AutomaticValues(
+  const vtkFRepInformation::Metadata& input) const
 {
-  // The sliders' ranges are the input's intervals: bring the input up to date now (the FRep
-  // producers only parse, compile or specialise), with the request RequestData will make.
-  for (auto& range : this->Ranges)
-  {
-    range[0] = range[1] = 0.0;
-  }
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo)
-  {
-    vtkExecutive* producer = nullptr;
-    int port = 0;
-    vtkExecutive::PRODUCER()->Get(inInfo, producer, port);
-    if (auto* pipeline = vtkStreamingDemandDrivenPipeline::SafeDownCast(producer))
-    {
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-      pipeline->Update(port);
-    }
-    if (vtkFRepObject* input = vtkFRepObject::GetData(inInfo))
-    {
-      for (int i = 0; i < NumberOfValues && i < input->GetModelDimension(); ++i)
-      {
-        input->GetCoordinateRange(i, this->Ranges[i]);
-      }
-    }
-  }
-  return this->Superclass::RequestInformation(request, inputVector, outputVector);
-}
-
-//------------------------------------------------------------------------------
-int vtkPVFRepSlice::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkFRepObject* input = vtkFRepObject::GetData(inputVector[0]);
-  if (!input || !input->HasModel())
-  {
-    return this->Superclass::RequestData(request, inputVector, outputVector);
-  }
-
   // The coordinates that stay free: FreeCoordinateOrder's names, else the first
   // OutputDimension free ones not requested through vtkFRepSlice's API.
   std::set<int> explicitly;
@@ -99,9 +57,9 @@ int vtkPVFRepSlice::RequestData(
   }
   for (const auto& entry : this->FixedValuesByName)
   {
-    for (int i = 0; i < input->GetModelDimension(); ++i)
+    for (int i = 0; i < input.GetModelDimension(); ++i)
     {
-      if (input->GetCoordinateName(i) == entry.first)
+      if (input.Names[i] == entry.first)
       {
         explicitly.insert(i);
       }
@@ -116,9 +74,9 @@ int vtkPVFRepSlice::RequestData(
     while (std::getline(names, name, ','))
     {
       name = Trim(name);
-      for (int i = 0; i < input->GetModelDimension(); ++i)
+      for (int i = 0; i < input.GetModelDimension(); ++i)
       {
-        if (input->GetCoordinateName(i) == name)
+        if (input.Names[i] == name)
         {
           kept.insert(i);
         }
@@ -127,7 +85,7 @@ int vtkPVFRepSlice::RequestData(
   }
   else
   {
-    for (int c : input->GetFreeCoordinates())
+    for (int c : input.FreeCoordinates)
     {
       if (static_cast<int>(kept.size()) < this->OutputDimension && !explicitly.count(c))
       {
@@ -136,25 +94,69 @@ int vtkPVFRepSlice::RequestData(
     }
   }
 
-  // Fix the others (without Modified(): this is execution, not a new request), run the
-  // superclass, and give the explicit requests back.
-  const std::map<int, double> requests = this->FixedValues;
-  for (int c : input->GetFreeCoordinates())
+  // Every other free coordinate: Xi, or the midpoint of its interval beyond x8.
+  std::map<int, double> values;
+  for (int c : input.FreeCoordinates)
   {
     if (kept.count(c) || explicitly.count(c))
     {
       continue;
     }
-    double value = this->GetValue(c);
-    if (c >= NumberOfValues)
-    {
-      double range[2];
-      input->GetCoordinateRange(c, range);
-      value = 0.5 * (range[0] + range[1]);
-    }
+    values[c] = c < NumberOfValues ? this->GetValue(c)
+                                   : 0.5 * (input.Ranges[c][0] + input.Ranges[c][1]);
+  }
+  return values;
+}
+
+//------------------------------------------------------------------------------
+int vtkPVFRepSlice::RequestInformation(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The sliders' ranges are the input's intervals, from its metadata keys (nothing upstream is
+  // executed); the output's keys are vtkFRepSlice's with the automatic values applied.
+  for (auto& range : this->Ranges)
+  {
+    range[0] = range[1] = 0.0;
+  }
+  vtkFRepInformation::Metadata input;
+  if (!vtkFRepInformation::Get(inputVector[0]->GetInformationObject(0), input))
+  {
+    return this->Superclass::RequestInformation(request, inputVector, outputVector);
+  }
+  for (int i = 0; i < NumberOfValues && i < input.GetModelDimension(); ++i)
+  {
+    this->Ranges[i][0] = input.Ranges[i][0];
+    this->Ranges[i][1] = input.Ranges[i][1];
+  }
+  return this->WithAutomaticValues(input,
+    [&] { return this->Superclass::RequestInformation(request, inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
+int vtkPVFRepSlice::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkFRepInformation::Metadata input;
+  if (!vtkFRepInformation::Describe(vtkFRepObject::GetData(inputVector[0]), input))
+  {
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
+  return this->WithAutomaticValues(input,
+    [&] { return this->Superclass::RequestData(request, inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
+int vtkPVFRepSlice::WithAutomaticValues(
+  const vtkFRepInformation::Metadata& input, const std::function<int()>& pass)
+{
+  // Fix the others (without Modified(): this is execution, not a new request), run the
+  // superclass, and give the explicit requests back.
+  const std::map<int, double> requests = this->FixedValues;
+  for (const auto& [c, value] : this->AutomaticValues(input))
+  {
     this->FixedValues[c] = value;
   }
-  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  const int result = pass();
   this->FixedValues = requests;
   return result;
 }

@@ -18,10 +18,10 @@
  * Coordinates fixed upstream stay fixed (their slider has no effect). A 4-D object with the
  * defaults gives the 3-D cross-section x4 = X4; a 5-D one x4 = X4, x5 = X5.
  *
- * For the sliders' ranges, RequestInformation brings the input up to date (FRep producers only
- * parse, compile or specialise: milliseconds, the same piece-0-of-1 request as in
- * RequestData) and GetXiRange() then gives the interval of model coordinate xi ([0, 0] for a
- * coordinate the input does not have). Errors are vtkFRepSlice's: one message listing every
+ * For the sliders' ranges, RequestInformation reads the input's vtkFRepInformation keys (nothing
+ * upstream is executed) and GetXiRange() then gives the interval of model coordinate xi ([0, 0]
+ * for a coordinate the input does not have); the output's keys are those of the cross-section
+ * RequestData will make. Errors are vtkFRepSlice's: one message listing every
  * problem (e.g. an unknown name in FreeCoordinateOrder) and an empty output.
  *
  * @sa vtkFRepSlice vtkFRepObject
@@ -32,6 +32,9 @@
 
 #include "FRepKitParaViewModule.h" // for export macro
 #include "vtkFRepSlice.h"
+
+#include <functional> // for std::function
+#include <map>        // for std::map
 
 class FREPKITPARAVIEW_EXPORT vtkPVFRepSlice : public vtkFRepSlice
 {
@@ -115,6 +118,14 @@ protected:
 private:
   vtkPVFRepSlice(const vtkPVFRepSlice&) = delete;
   void operator=(const vtkPVFRepSlice&) = delete;
+
+#ifndef __VTK_WRAP__
+  // The values of the free coordinates that neither stay free nor are requested explicitly.
+  std::map<int, double> AutomaticValues(const vtkFRepInformation::Metadata& input) const;
+  // Runs `pass` (a superclass pass) with AutomaticValues(input) added to FixedValues.
+  int WithAutomaticValues(
+    const vtkFRepInformation::Metadata& input, const std::function<int()>& pass);
+#endif
 };
 
 #endif

@@ -23,13 +23,17 @@
  * every piece (CAN_HANDLE_PIECE_REQUEST on both ports). With GenerateGeometry off, port 1 stays
  * empty and nothing is meshed.
  *
- * GetObjectNames() lists the objects the program defines, after RequestInformation (parsing
- * only): the object the reader evaluates when ObjectName is empty (my_model, else the first)
- * comes first, then the others in the order of the file. A program that does not parse gives
- * an empty list here; its diagnostics (file:line:col) are reported once, by RequestData.
+ * GetObjectNames() lists the objects the program defines, after RequestInformation (the
+ * program vtkHyperFunSource parses there, once): the object the reader evaluates when
+ * ObjectName is empty (my_model, else the first) comes first, then the others in the order of
+ * the file; an ObjectName the program lacks still lists them. A program that does not parse
+ * gives an empty list here; its diagnostics (file:line:col) are reported once, by
+ * RequestInformation (vtkHyperFunSource).
  *
  * Meshing the default geometry reports progress through the reader, and AbortExecute (or an
  * observer setting it) stops it, leaving port 1 empty.
+ *
+ * Module FRepKit::IO (VTK keeps readers in IO modules).
  *
  * @sa vtkHyperFunSource vtkFRepPolygonizer vtkFRepSlice
  */
@@ -37,13 +41,13 @@
 #ifndef vtkHyperFunReader_h
 #define vtkHyperFunReader_h
 
-#include "FRepKitFiltersModule.h" // for export macro
+#include "FRepKitIOModule.h" // for export macro
 #include "vtkHyperFunSource.h"
 
 class vtkPolyData;
 class vtkStringArray;
 
-class FREPKITFILTERS_EXPORT vtkHyperFunReader : public vtkHyperFunSource
+class FREPKITIO_EXPORT vtkHyperFunReader : public vtkHyperFunSource
 {
 public:
   static vtkHyperFunReader* New();
@@ -98,9 +102,6 @@ protected:
 private:
   vtkHyperFunReader(const vtkHyperFunReader&) = delete;
   void operator=(const vtkHyperFunReader&) = delete;
-
-  // The program's text (file or ModelText) and its name; false when there is none.
-  bool ReadProgram(std::string& text, std::string& sourceName) const;
 };
 
 #endif

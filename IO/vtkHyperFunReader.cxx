@@ -14,10 +14,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
-#include "Language/parser.h"
-
-#include <fstream>
-#include <sstream>
+#include "Language/ast.h"
 
 vtkStandardNewMacro(vtkHyperFunReader);
 
@@ -77,31 +74,6 @@ int vtkHyperFunReader::RequestDataObject(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
-bool vtkHyperFunReader::ReadProgram(std::string& text, std::string& sourceName) const
-{
-  if (this->FileName && *this->FileName)
-  {
-    std::ifstream in(this->FileName, std::ios::binary);
-    if (!in)
-    {
-      return false;
-    }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-    sourceName = this->FileName;
-    return !in.bad();
-  }
-  if (this->ModelText)
-  {
-    text = this->ModelText;
-    sourceName = "<string>";
-    return true;
-  }
-  return false;
-}
-
-//------------------------------------------------------------------------------
 int vtkHyperFunReader::RequestInformation(vtkInformation* request,
   vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
@@ -110,23 +82,17 @@ int vtkHyperFunReader::RequestInformation(vtkInformation* request,
   {
     return 0;
   }
-  // Port 1 is split into slabs by the polygoniser; port 0 is whole on every piece.
-  outInfo->GetInformationObject(1)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  // Port 1 is split into slabs by the polygoniser; port 0 is whole on every piece (both ports
+  // have CAN_HANDLE_PIECE_REQUEST, see vtkFRepObjectAlgorithm).
 
-  // The object names, by parsing only (diagnostics are reported once, by RequestData).
+  // The object names, from the program the superclass has just parsed (once).
   this->ObjectNames->Initialize();
-  std::string text;
-  std::string sourceName;
-  if (!this->ReadProgram(text, sourceName))
+  const std::shared_ptr<const frep::ast::Program> parsed = this->GetProgram();
+  if (!parsed || parsed->objects.empty())
   {
     return 1;
   }
-  const frep::ParseResult parsed = frep::parse_program(text, sourceName);
-  if (!parsed.ok() || parsed.program->objects.empty())
-  {
-    return 1;
-  }
-  const frep::ast::Program& program = *parsed.program;
+  const frep::ast::Program& program = *parsed;
   const int first = frep::ast::select_object(program, "my_model");
   if (first >= 0)
   {

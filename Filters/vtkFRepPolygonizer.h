@@ -34,6 +34,8 @@
 #include "FRepKitFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include "Sample/grid.h" // for frep::max_grid_samples
+
 #include <cstddef> // for std::size_t
 
 class vtkPolyData;
@@ -127,7 +129,8 @@ public:
 
   ///@{
   /**
-   * Largest grid accepted (default 4096^3 = 68719476736 points).
+   * Largest grid accepted (default 4096^3 = 68719476736 points, frep::max_grid_samples: the
+   * engine's one grid limit).
    */
   vtkSetMacro(MaximumNumberOfSamples, double);
   vtkGetMacro(MaximumNumberOfSamples, double);
@@ -186,7 +189,7 @@ protected:
   vtkTypeBool ComputeAttributes = 1;
   vtkTypeBool Culling = 1;
   int RefinementSteps = 0;
-  double MaximumNumberOfSamples = 68719476736.0;
+  double MaximumNumberOfSamples = frep::max_grid_samples;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = vtkAlgorithm::SINGLE_PRECISION;
 

@@ -12,10 +12,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include "Eval/batch_evaluator.h"
-#include "Eval/gradient_evaluator.h"
 #include "Eval/thread_pool.h"
 #include "Language/diagnostic.h"
+#include "Sample/grid_sampler.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,14 +30,6 @@ vtkStandardNewMacro(vtkFRepSampler);
 
 namespace
 {
-// Samples per slab: enough blocks (256 samples each) for the batch evaluator to spread over
-// the pool (it runs fewer than 32 blocks on the caller alone), small enough for progress
-// reports and abort checks several times a second and for slab buffers that stay in cache.
-constexpr vtkIdType SlabSamples = vtkIdType(1) << 16;
-// Samples per gradient task: one GradientEvaluator call is ~0.1-1 us, so a task is well above
-// the pool's hand-off cost and a slab still makes 64 tasks.
-constexpr std::size_t GradientChunk = 1024;
-
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 // "file:line:col: error: message" for error id `id` of `tape` (1-based), as the policy wants.
@@ -75,8 +66,7 @@ vtkSmartPointer<ArrayOf<T>> MakeArray(const char* name, int components, vtkIdTyp
 }
 }
 
-// The grid decided by RequestInformation, and the evaluators kept between executions (the
-// pool's threads and the batch program are reused while the tape stays the same).
+// The grid decided by RequestInformation, and the thread pool kept between executions.
 struct vtkFRepSampler::Internals
 {
   bool Valid = false;
@@ -84,12 +74,10 @@ struct vtkFRepSampler::Internals
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   double Origin[3] = { 0, 0, 0 };
   double Spacing[3] = { 1, 1, 1 };
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; // lo, hi per axis: the engine's grid (Sample/grid.h)
 
   int PoolRequest = -1; // NumberOfThreads the pool was made for
   std::shared_ptr<frep::ThreadPool> Pool;
-  std::shared_ptr<const frep::Tape> Tape;
-  std::unique_ptr<frep::BatchEvaluator> Batch;
-  std::vector<std::unique_ptr<frep::GradientEvaluator>> Gradients; // one per pool slot
 };
 
 //------------------------------------------------------------------------------
@@ -194,7 +182,7 @@ bool vtkFRepSampler::PlanGrid(const vtkFRepInformation::Metadata& object, std::s
       lo = object.Ranges[coordinate][0];
       hi = object.Ranges[coordinate][1];
     }
-    const double spacing = dims[a] > 1 ? (hi - lo) / (dims[a] - 1) : 1.0;
+    const double spacing = frep::grid_step(lo, hi, dims[a]);
     if (!std::isfinite(lo) || !std::isfinite(hi) || !std::isfinite(spacing) ||
       !(spacing > 0.0))
     {
@@ -206,6 +194,8 @@ bool vtkFRepSampler::PlanGrid(const vtkFRepInformation::Metadata& object, std::s
     }
     in.Origin[a] = lo;
     in.Spacing[a] = spacing;
+    in.Bounds[2 * a] = lo;
+    in.Bounds[2 * a + 1] = hi;
   }
   in.Dimension = dimension;
   for (int a = 0; a < 3; ++a)
@@ -354,38 +344,49 @@ bool vtkFRepSampler::Sample(vtkFRepObject* object, vtkImageData* output, const i
   }
   const int dimension = in.Dimension;
 
-  // The pool (all cores by default) and the evaluators, reused while nothing changed.
+  // The engine's grid: the whole grid of RequestInformation, of which the extent is the part.
+  frep::GridSpec grid;
+  for (int a = 0; a < dimension; ++a)
+  {
+    frep::GridAxis axis;
+    axis.lo = in.Bounds[2 * a];
+    axis.hi = in.Bounds[2 * a + 1];
+    axis.samples = in.WholeExtent[2 * a + 1] + 1;
+    axis.begin = extent[2 * a];
+    axis.end = extent[2 * a + 1] + 1;
+    grid.axes.push_back(axis);
+  }
+  // The pool (all cores by default), reused while NumberOfThreads stays the same.
   if (!in.Pool || in.PoolRequest != this->NumberOfThreads)
   {
     in.Pool = std::make_shared<frep::ThreadPool>(this->NumberOfThreads);
     in.PoolRequest = this->NumberOfThreads;
-    in.Batch.reset();
   }
-  if (!in.Batch || in.Tape != tape)
-  {
-    frep::BatchOptions options;
-    options.pool = in.Pool;
-    in.Batch = std::make_unique<frep::BatchEvaluator>(tape, options);
-    in.Tape = tape;
-    in.Gradients.clear();
-  }
-  in.Gradients.resize(static_cast<std::size_t>(in.Pool->size()));
-  this->NumberOfThreadsUsed = in.Batch->threads();
-
   const int attributeCount = this->ComputeAttributes
     ? std::min(description.AttributeCount, static_cast<int>(tape->outputs.size()) - 1)
     : 0;
-  const bool gradients = this->ComputeGradients || this->ComputeNormals;
   const bool hfp = this->HfpErrors;
+  frep::SampleOptions options;
+  options.attribute_count = std::max(attributeCount, 0);
+  options.gradients = this->ComputeGradients || this->ComputeNormals;
+  options.failures = hfp ? frep::FailurePolicy::Previous : frep::FailurePolicy::NaN;
+  options.max_samples = static_cast<double>(this->MaximumNumberOfSamples);
+  options.pool = in.Pool;
+  options.progress = [this](double fraction)
+  {
+    this->UpdateProgress(fraction);
+    return !this->CheckAbort();
+  };
+  // The engine's size limit, before the arrays are allocated (RequestInformation checked it
+  // already; this keeps the engine's guarantee whoever calls).
+  if (const std::string problem = frep::check_grid(grid, tape->input_count, options);
+      !problem.empty())
+  {
+    vtkErrorMacro(<< problem << "; the output is empty");
+    return false;
+  }
 
-  const vtkIdType nx = extent[1] - extent[0] + 1;
-  const vtkIdType ny = extent[3] - extent[2] + 1;
-  const vtkIdType nz = extent[5] - extent[4] + 1;
-  const vtkIdType total = nx * ny * nz;
-  const vtkIdType rows = ny * nz;
-  const vtkIdType rowsPerSlab = std::max<vtkIdType>(1, SlabSamples / nx);
-  const vtkIdType slab = std::min(total, rowsPerSlab * nx);
-
+  const vtkIdType total = static_cast<vtkIdType>(frep::grid_part_size(grid));
   // Output arrays first: if memory runs out, it does so before any evaluation.
   vtkPointData* pd = output->GetPointData();
   auto F = MakeArray<T>("F", 1, total);
@@ -411,179 +412,88 @@ bool vtkFRepSampler::Sample(vtkFRepObject* object, vtkImageData* output, const i
   T* const nOut = normals ? normals->GetPointer(0) : nullptr;
   T* const sOut = attributes ? attributes->GetPointer(0) : nullptr;
 
-  // Per-slab buffers: the coordinates of the slab's samples (structure of arrays, as the batch
-  // evaluator reads them), F (unless it goes straight into a double output), s[] rows, errors.
-  std::vector<double> xRow(static_cast<std::size_t>(nx));
-  for (vtkIdType i = 0; i < nx; ++i)
+  // Each block of the engine into the arrays: F and s[] as computed (the failure policy is
+  // applied already), gradients padded to 3 components (dF/dz = 0 for a 2-D object), normals
+  // from them (NaN for a failed sample unless hfp's policy gave it the previous values).
+  const auto store = [&](const frep::SampleBlock& b)
   {
-    xRow[i] = SamplePosition(in.Origin[0], in.Spacing[0], extent[0] + static_cast<int>(i));
-  }
-  std::vector<std::vector<double>> coordinates(dimension, std::vector<double>(slab));
-  std::vector<double> values(std::is_same_v<T, double> ? 0 : slab);
-  std::vector<double> sRows(static_cast<std::size_t>(attributeCount) * slab);
-  std::vector<double*> sPointers(attributeCount);
-  for (int j = 0; j < attributeCount; ++j)
-  {
-    sPointers[j] = sRows.data() + static_cast<std::size_t>(j) * slab;
-  }
-  std::vector<std::uint32_t> errors(slab);
-
-  vtkIdType failures = 0;
-  vtkIdType firstFailure = -1;
-  std::uint32_t firstError = 0;
-  double firstPosition[3] = { 0, 0, 0 };
-
-  this->UpdateProgress(0.0);
-  for (vtkIdType row0 = 0; row0 < rows; row0 += rowsPerSlab)
-  {
-    if (this->CheckAbort())
+    const std::size_t base = b.first;
+    for (std::size_t p = 0; p < b.count; ++p)
     {
-      return false;
-    }
-    const vtkIdType row1 = std::min(rows, row0 + rowsPerSlab);
-    const vtkIdType base = row0 * nx; // first sample of the slab in the output
-    const std::size_t count = static_cast<std::size_t>((row1 - row0) * nx);
-
-    // Coordinates, row by row: x from the precomputed row, y and z constant along a row.
-    for (vtkIdType r = row0; r < row1; ++r)
-    {
-      const std::size_t offset = static_cast<std::size_t>((r - row0) * nx);
-      std::copy(xRow.begin(), xRow.end(), coordinates[0].begin() + offset);
-      const int j = extent[2] + static_cast<int>(r % ny);
-      std::fill_n(coordinates[1].begin() + offset, nx,
-        SamplePosition(in.Origin[1], in.Spacing[1], j));
-      if (dimension == 3)
-      {
-        const int k = extent[4] + static_cast<int>(r / ny);
-        std::fill_n(coordinates[2].begin() + offset, nx,
-          SamplePosition(in.Origin[2], in.Spacing[2], k));
-      }
-    }
-    const double* inputs[3] = { coordinates[0].data(), coordinates[1].data(),
-      dimension == 3 ? coordinates[2].data() : nullptr };
-
-    // F (and s[]) on every core.
-    double* f = nullptr;
-    if constexpr (std::is_same_v<T, double>)
-    {
-      f = fOut + base;
-    }
-    else
-    {
-      f = values.data();
-    }
-    in.Batch->evaluate(std::span<const double* const>(inputs, dimension), count, f,
-      errors.data(), std::span<double* const>(sPointers.data(), sPointers.size()));
-    const auto failed = [&](std::size_t p) { return errors[p] != 0 || std::isnan(f[p]); };
-
-    if constexpr (!std::is_same_v<T, double>)
-    {
-      std::transform(f, f + count, fOut + base, [](double v) { return static_cast<T>(v); });
+      fOut[base + p] = static_cast<T>(b.values[p]);
     }
     for (int j = 0; j < attributeCount; ++j)
     {
       T* s = sOut + base * attributeCount + j;
-      const double* row = sPointers[j];
-      for (std::size_t p = 0; p < count; ++p)
+      const double* column = b.attributes[j];
+      for (std::size_t p = 0; p < b.count; ++p)
       {
-        s[p * attributeCount] = static_cast<T>(row[p]);
+        s[p * attributeCount] = static_cast<T>(column[p]);
       }
     }
-
-    // Gradients: pointwise evaluators, one per pool slot, over chunks of the slab.
-    if (gradients)
+    if (!gOut && !nOut)
     {
-      const std::size_t tasks = (count + GradientChunk - 1) / GradientChunk;
-      in.Pool->parallel_for(tasks,
-        [&](std::size_t task, int slot)
-        {
-          std::unique_ptr<frep::GradientEvaluator>& evaluator = in.Gradients[slot];
-          if (!evaluator)
-          {
-            evaluator = std::make_unique<frep::GradientEvaluator>(tape);
-          }
-          const std::size_t end = std::min(count, (task + 1) * GradientChunk);
-          for (std::size_t p = task * GradientChunk; p < end; ++p)
-          {
-            double g[3] = { NaN, NaN, NaN };
-            if (!failed(p))
-            {
-              const double point[3] = { inputs[0][p], inputs[1][p],
-                dimension == 3 ? inputs[2][p] : 0.0 };
-              g[2] = 0.0; // dF/dz of a 2-D object
-              evaluator->evaluate(
-                std::span<const double>(point, dimension), std::span<double>(g, dimension));
-            }
-            const std::size_t id = static_cast<std::size_t>(base) + p;
-            if (gOut)
-            {
-              for (int k = 0; k < 3; ++k)
-              {
-                gOut[3 * id + k] = static_cast<T>(g[k]);
-              }
-            }
-            if (nOut)
-            {
-              const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-              // Outward is where F decreases: -grad F. No direction where the gradient
-              // vanishes or is not finite (failed samples are filled in below).
-              const double scale = length > 0.0 && std::isfinite(length) ? -1.0 / length : 0.0;
-              for (int k = 0; k < 3; ++k)
-              {
-                nOut[3 * id + k] = static_cast<T>(g[k] * scale);
-              }
-            }
-          }
-        });
+      return;
     }
-
-    // Failed samples, in point order: counted; NaN, or hfp's previous sample's values (the
-    // previous sample is final by then: it succeeded or was itself filled in before).
-    for (std::size_t p = 0; p < count; ++p)
+    for (std::size_t p = 0; p < b.count; ++p)
     {
-      if (!failed(p))
+      const std::size_t id = base + p;
+      double g[3] = { NaN, NaN, NaN };
+      const bool nan = b.failed[p] && !hfp;
+      if (!nan)
       {
-        continue;
-      }
-      const vtkIdType id = base + static_cast<vtkIdType>(p);
-      if (failures++ == 0)
-      {
-        firstFailure = id;
-        firstError = errors[p];
-        firstPosition[0] = inputs[0][p];
-        firstPosition[1] = inputs[1][p];
-        firstPosition[2] = dimension == 3 ? inputs[2][p] : 0.0;
-      }
-      const auto fill = [&](T* array, int components)
-      {
-        if (!array)
+        for (int k = 0; k < 3; ++k)
         {
-          return;
+          g[k] = k < dimension ? b.gradients[p * dimension + k] : 0.0;
         }
-        for (int k = 0; k < components; ++k)
+      }
+      if (gOut)
+      {
+        for (int k = 0; k < 3; ++k)
         {
-          T& v = array[id * components + k];
-          v = !hfp ? static_cast<T>(NaN) : id == 0 ? T(0) : array[(id - 1) * components + k];
+          gOut[3 * id + k] = static_cast<T>(g[k]);
         }
-      };
-      fill(fOut, 1);
-      fill(gOut, 3);
-      fill(nOut, 3);
-      fill(sOut, attributeCount);
+      }
+      if (nOut)
+      {
+        const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        // Outward is where F decreases: -grad F. No direction where the gradient vanishes or
+        // is not finite; NaN for a failed sample (NaN policy).
+        const double scale =
+          nan ? NaN : length > 0.0 && std::isfinite(length) ? -1.0 / length : 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          nOut[3 * id + k] = static_cast<T>(g[k] * scale);
+        }
+      }
     }
-    this->UpdateProgress(static_cast<double>(row1) / static_cast<double>(rows));
+  };
+
+  const frep::SampleResult result = frep::sample_grid(tape, grid, options, store);
+  this->NumberOfThreadsUsed = result.threads;
+  if (!result.error.empty())
+  {
+    vtkErrorMacro(<< "sampling " << object->GetObjectName() << ": " << result.error
+                  << "; the output is empty");
+    return false;
+  }
+  if (result.cancelled)
+  {
+    return false;
   }
 
+  const vtkIdType failures = static_cast<vtkIdType>(result.failed);
   this->NumberOfEvaluationErrors = failures;
   if (failures > 0)
   {
+    const std::vector<double>& at = result.first_failed_at;
     vtkWarningMacro(<< failures << " of " << total << " samples of " << object->GetObjectName()
                     << " raised run-time errors; "
                     << (hfp ? "they took the previous sample's values (HfpErrors, as hfp does)"
                             : "they are NaN (outside)")
-                    << ". The first, sample " << firstFailure << " at (" << firstPosition[0]
-                    << ", " << firstPosition[1] << ", " << firstPosition[2]
-                    << "): " << DescribeError(*tape, firstError, object));
+                    << ". The first, sample " << result.first_failed << " at (" << at[0]
+                    << ", " << at[1] << ", " << (dimension == 3 ? at[2] : 0.0)
+                    << "): " << DescribeError(*tape, result.first_error, object));
   }
   return true;
 }

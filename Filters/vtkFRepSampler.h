@@ -12,9 +12,11 @@
  * negated as vtkFRepImplicitFunction does for VTK's implicit functions). Contour F = 0.
  *
  * SAMPLE POSITIONS: with lo, hi the bounds of an axis and n its number of samples,
- *   spacing = (hi - lo) / (n - 1)   (1 when n == 1),
+ *   spacing = (hi - lo) / (n - 1)   (1 when n == 1; frep::grid_step),
  *   position of sample i = lo + i * spacing   (i the global index, 0..n-1; see SamplePosition),
- * computed in double precision exactly this way for every sample of every extent, so a value
+ * the engine's one position formula (FRep/Sample/grid.h, frep::grid_coordinate, which the
+ * mesher and frepkit slice use too), computed exactly this way for every sample of every
+ * extent, so a value
  * equals frep::PointEvaluator's at that position bit for bit (and the image's origin and
  * spacing reproduce the position: vtkImageData::GetPoint). The last sample lies at hi up to
  * rounding. The bounds are ModelBounds; an axis whose ModelBounds have lo > hi (the default for
@@ -56,11 +58,12 @@
  * the requested UPDATE_EXTENT is computed: an image split over ranks or streamed in pieces has
  * exactly the values of the whole image.
  *
- * SPEED: the image is computed in slabs of whole rows (about 2^16 samples each): per slab the
- * row coordinates are generated (no full-volume coordinate arrays), F and s[] are evaluated by
+ * SPEED: the image is computed by the engine's grid sampler (frep::sample_grid,
+ * FRep/Sample/grid_sampler.h) in blocks of 2^16 samples: per block the coordinates are
+ * generated (no full-volume coordinate arrays), F and s[] are evaluated by
  * frep::BatchEvaluator (SIMD lanes), gradients by one frep::GradientEvaluator per thread, all
  * on the engine's frep::ThreadPool with NumberOfThreads participants (default 0 = every core).
- * Progress is reported after each slab and CheckAbort() is honoured between slabs (an aborted
+ * Progress is reported after each block and CheckAbort() is honoured between blocks (an aborted
  * execution leaves an empty image).
  *
  * @sa vtkFRepObject vtkFRepSlice vtkHyperFunSource vtkSampleFunction vtkFRepImplicitFunction
@@ -71,6 +74,8 @@
 #include "FRepKitFiltersModule.h" // for export macro
 #include "vtkFRepInformation.h" // for vtkFRepInformation::Metadata
 #include "vtkImageAlgorithm.h"
+
+#include "Sample/grid.h" // for frep::grid_coordinate
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -182,11 +187,12 @@ public:
 
   /**
    * The position of sample `index` on an axis that starts at `origin` with `spacing`:
-   * origin + index * spacing, in double precision. Every sample is placed by this function.
+   * origin + index * spacing, in double precision (frep::grid_coordinate, the engine's one
+   * position formula). Every sample is placed by it.
    */
   static double SamplePosition(double origin, double spacing, int index)
   {
-    return origin + static_cast<double>(index) * spacing;
+    return frep::grid_coordinate(origin, spacing, index);
   }
 
 protected:

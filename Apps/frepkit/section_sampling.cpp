@@ -1,12 +1,11 @@
 #include "section_sampling.h"
 
-#include "Eval/batch_evaluator.h"
+#include "Sample/grid_sampler.h"
 #include "interrupt_guard.h"
 #include "progress_bar.h"
-#include "sampling_grid.h"
 #include "user_error.h"
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 
 namespace frepkit
@@ -19,95 +18,66 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
   int threads,
   bool show_progress)
 {
-  const double total = grid_sample_count(grid, axes);
-  if (total > kMaxSectionSamples)
-  {
-    char message[200];
-    std::snprintf(message,
-      sizeof message,
-      "%.0f samples (%s) exceed the limit of %.0f for a sampled image or volume; lower --grid",
-      total,
-      describe_grid(grid, axes).c_str(),
-      kMaxSectionSamples);
-    throw UserError(message);
-  }
+  frep::GridSpec spec;
   SampledSection section;
   section.axes = axes;
   for (int k = 0; k < axes; ++k)
   {
     const std::size_t i = static_cast<std::size_t>(k);
+    spec.axes.push_back({ grid.lo[i], grid.hi[i], grid.samples[i] });
     section.samples[i] = grid.samples[i];
     section.origin[i] = grid.lo[i];
-    section.spacing[i] = (grid.hi[i] - grid.lo[i]) / static_cast<double>(grid.samples[i] - 1);
+    section.spacing[i] = frep::grid_step(grid.lo[i], grid.hi[i], grid.samples[i]);
   }
-  const std::size_t nx = static_cast<std::size_t>(section.samples[0]);
-  const std::size_t ny = static_cast<std::size_t>(section.samples[1]);
-  const std::size_t nz = static_cast<std::size_t>(section.samples[2]);
-  const std::size_t slab = nx * ny;
-  section.values.resize(slab * nz);
+  frep::SampleOptions options;
+  options.attribute_count = attributes ? -1 : 0;
+  options.failures = frep::FailurePolicy::NaN;
+  options.max_samples = kMaxSectionSamples;
+  options.threads = threads;
+  // Refused before the section's arrays are allocated.
+  if (const std::string problem = frep::check_grid(spec, tape->input_count, options);
+      !problem.empty())
+  {
+    char limit[120];
+    std::snprintf(limit,
+      sizeof limit,
+      ". A sampled image or volume may not exceed the limit of %.0f samples; lower --grid",
+      kMaxSectionSamples);
+    throw UserError("cannot sample the " + std::string(axes == 3 ? "volume" : "image") + ": " +
+                    problem + limit);
+  }
+  section.values.resize(section.count());
   const std::size_t s_count = tape->outputs.size() > 0 ? tape->outputs.size() - 1 : 0;
   if (attributes)
   {
-    section.attributes.assign(s_count, std::vector<double>(slab * nz));
+    section.attributes.assign(s_count, std::vector<double>(section.count()));
   }
 
-  // Sample i of axis k at lo + i * (hi - lo) / (samples - 1), as the mesher's grid.
-  auto coordinate = [&grid](int axis, std::size_t i)
-  {
-    const std::size_t a = static_cast<std::size_t>(axis);
-    return grid.lo[a] + static_cast<double>(i) * (grid.hi[a] - grid.lo[a]) /
-                          static_cast<double>(grid.samples[a] - 1);
-  };
-  // The x and y coordinates of one slab are the same for every z.
-  std::vector<double> xs(slab);
-  std::vector<double> ys(slab);
-  for (std::size_t j = 0; j < ny; ++j)
-  {
-    const double y = coordinate(1, j);
-    for (std::size_t i = 0; i < nx; ++i)
-    {
-      xs[i + nx * j] = coordinate(0, i);
-      ys[i + nx * j] = y;
-    }
-  }
-  // The last sample sits exactly on the box's maximum, as in the mesher's grid.
-  for (std::size_t j = 0; j < ny; ++j)
-  {
-    xs[nx - 1 + nx * j] = grid.hi[0];
-  }
-  for (std::size_t i = 0; i < nx; ++i)
-  {
-    ys[i + nx * (ny - 1)] = grid.hi[1];
-  }
-  std::vector<double> zs(axes == 3 ? slab : 0);
-
-  frep::BatchOptions options;
-  options.threads = threads;
-  frep::BatchEvaluator evaluator(tape, options);
   InterruptGuard interrupt;
   ProgressBar bar("sampling", show_progress);
-  for (std::size_t k = 0; k < nz; ++k)
+  options.progress = [&bar](double fraction)
   {
-    std::vector<const double*> inputs{ xs.data(), ys.data() };
-    if (axes == 3)
+    bar.update(fraction);
+    return !InterruptGuard::interrupted();
+  };
+  const frep::SampleResult result = frep::sample_grid(tape, spec, options,
+    [&section](const frep::SampleBlock& b)
     {
-      const double z = k + 1 == nz ? grid.hi[2] : coordinate(2, k);
-      std::fill(zs.begin(), zs.end(), z);
-      inputs.push_back(zs.data());
-    }
-    std::vector<double*> attribute_columns;
-    for (auto& column : section.attributes)
-    {
-      attribute_columns.push_back(column.data() + k * slab);
-    }
-    section.failed += evaluator.evaluate(
-      inputs, slab, section.values.data() + k * slab, nullptr, attribute_columns);
-    bar.update(static_cast<double>(k + 1) / static_cast<double>(nz));
-    if (InterruptGuard::interrupted())
-    {
-      throw UserError("cancelled (interrupted); no output written");
-    }
+      std::copy_n(b.values, b.count, section.values.begin() + b.first);
+      for (std::size_t j = 0; j < section.attributes.size(); ++j)
+      {
+        std::copy_n(b.attributes[j], b.count, section.attributes[j].begin() + b.first);
+      }
+    });
+  if (result.cancelled)
+  {
+    throw UserError("cancelled (interrupted); no output written");
   }
+  if (!result.ok())
+  {
+    throw UserError(result.error);
+  }
+  section.failed = result.errors;
   return section;
 }
 

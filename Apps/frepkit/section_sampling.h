@@ -1,5 +1,5 @@
-// Samples a tape on a regular grid with the batch evaluator (SIMD, all cores): F and, when asked,
-// s[1..m]. Coordinates are generated one slab (one z) at a time. Grids larger than
+// frepkit slice's sampled image or volume: the engine's grid sampler (FRep/Sample/grid_sampler.h)
+// over the --box/--grid grid, F and, when asked, s[1..m], stored whole. Grids larger than
 // kMaxSectionSamples are refused before anything is allocated.
 #pragma once
 
@@ -12,7 +12,8 @@
 namespace frepkit
 {
 
-/// 2^27 samples: 1 GiB of F values (plus s[] arrays). Images and volumes beyond are refused.
+/// 2^27 samples: 1 GiB of F values (plus s[] arrays). Images and volumes beyond are refused
+/// (SampleOptions::max_samples: the engine's limit, lowered to what slice holds in memory).
 constexpr double kMaxSectionSamples = 134217728.0;
 
 /// Samples `tape` (axes inputs) over the first `axes` axes of `grid`. Throws UserError when the

@@ -27,7 +27,7 @@ GridFrame::GridFrame(const Grid& grid, int dim)
   {
     lo[a] = grid.lo[a];
     samples[a] = grid.samples[a];
-    step[a] = (grid.hi[a] - grid.lo[a]) / double(grid.samples[a] - 1);
+    step[a] = grid_step(grid.lo[a], grid.hi[a], grid.samples[a]);
   }
 }
 
@@ -47,7 +47,6 @@ std::string validate(const Tape* tape, const Grid& grid, int dimension,
             << " (fix the others to values: a slice)";
     return message.str();
   }
-  double total = 1.0;
   for (int a = 0; a < dimension; ++a)
   {
     if (!std::isfinite(grid.lo[a]) || !std::isfinite(grid.hi[a]) || !(grid.lo[a] < grid.hi[a]))
@@ -62,20 +61,13 @@ std::string validate(const Tape* tape, const Grid& grid, int dimension,
               << grid.samples[a] << ")";
       return message.str();
     }
-    total *= double(grid.samples[a]);
   }
-  // Keys are vertex * 4 + axis in 64 bits; the time limit comes first anyway.
-  const double limit = std::min(options.max_samples, 1e18);
-  if (total > limit)
+  if (std::string size = check_grid_size(
+        std::span<const std::int64_t>(grid.samples.data(), static_cast<std::size_t>(dimension)),
+        options.max_samples, "ExtractOptions::max_samples");
+    !size.empty())
   {
-    message << "grid: " << grid.samples[0];
-    for (int a = 1; a < dimension; ++a)
-    {
-      message << " x " << grid.samples[a];
-    }
-    message << " = " << total << " samples is more than the limit of " << limit
-            << " (ExtractOptions::max_samples)";
-    return message.str();
+    return size;
   }
   if (!std::isfinite(options.iso))
   {

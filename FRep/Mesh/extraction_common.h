@@ -27,8 +27,9 @@ namespace frep::mesh::detail
 /// Key of a point no other piece can produce (cell centres).
 constexpr std::uint64_t unshared_key = std::numeric_limits<std::uint64_t>::max();
 
-/// Sample coordinates: lo + i * step, step = (hi - lo) / (samples - 1), computed this one way
-/// everywhere so that neighbouring boxes see bit-identical positions and values.
+/// Sample coordinates: frep::grid_coordinate(lo, step, i) with step = frep::grid_step(lo, hi,
+/// samples) (Sample/grid.h, the sampler's positions), computed this one way everywhere so that
+/// neighbouring boxes see bit-identical positions and values.
 struct GridFrame
 {
   int dimension = 3;
@@ -37,7 +38,7 @@ struct GridFrame
   std::array<std::int64_t, 3> samples{ 1, 1, 1 };
 
   GridFrame(const Grid& grid, int dimension);
-  double coord(int axis, std::int64_t i) const { return lo[axis] + double(i) * step[axis]; }
+  double coord(int axis, std::int64_t i) const { return grid_coordinate(lo[axis], step[axis], i); }
   std::int64_t cells(int axis) const { return samples[axis] - 1; }
   std::int64_t vertex(std::int64_t i, std::int64_t j, std::int64_t k) const
   {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "Compiler/tape.h"
+#include "Sample/grid.h"
 
 #include <array>
 #include <cstddef>
@@ -29,7 +30,8 @@ namespace mesh
 {
 
 /// A regular grid of samples over a box: samples[k] >= 2 points on axis k, the first at lo[k]
-/// and the last at hi[k] (lo < hi). Sample i of axis k is at lo + i * (hi - lo) / (samples - 1).
+/// and the last at hi[k] (lo < hi). Sample i of axis k is at frep::grid_coordinate(lo, hi, i,
+/// samples) = lo + i * ((hi - lo) / (samples - 1)), as in the sampler (Sample/grid.h).
 /// For a 2-D contour only the first two axes are used.
 struct Grid
 {
@@ -50,8 +52,9 @@ struct ExtractOptions
   bool cull = true; ///< interval culling; off samples every grid point (for tests/measurements)
   /// Cells per axis of the smallest box the culling tests before sampling it.
   int leaf_cells = 8;
-  /// Refuse grids with more samples than this (the time would be unbounded) with an error.
-  double max_samples = 68719476736.0; // 4096^3
+  /// Refuse grids with more samples than this (the time would be unbounded) with an error;
+  /// the engine's one grid limit by default (4096^3, Sample/grid.h).
+  double max_samples = max_grid_samples;
   /// Only the cells [cells_begin, cells_end) per axis (a piece of a distributed run; the pieces
   /// of a partition together give the whole mesh, their shared points duplicated). The caps
   /// stay on the whole grid's box. cells_end 0 on an axis = up to the last cell.

@@ -1,0 +1,347 @@
+#include "Sample/grid_sampler.h"
+
+#include "Eval/batch_evaluator.h"
+#include "Eval/gradient_evaluator.h"
+#include "Eval/thread_pool.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <new>
+#include <sstream>
+
+namespace frep
+{
+namespace
+{
+
+// Samples per block: enough batch blocks (256 samples each) for the batch evaluator to spread
+// over the pool (it runs fewer than 32 blocks on the caller alone), few enough for progress
+// reports and cancel checks several times a second and for block buffers that stay in cache.
+constexpr std::size_t block_samples = std::size_t(1) << 16;
+// Samples per gradient task: one GradientEvaluator call is ~0.1-1 us, so a task is well above
+// the pool's hand-off cost and a block still makes 64 tasks.
+constexpr std::size_t gradient_chunk = 1024;
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::int64_t part_end(const GridAxis& axis)
+{
+  return axis.end == 0 ? axis.samples : axis.end;
+}
+
+// The sample counter of the part: the index on every axis of the next sample (axis 0 fastest)
+// and the position of axes 1.. (constant along a row of axis 0).
+class PartCursor
+{
+public:
+  explicit PartCursor(const GridSpec& grid)
+    : axes_(grid.axes)
+  {
+    for (const GridAxis& axis : axes_)
+    {
+      step_.push_back(grid_step(axis.lo, axis.hi, axis.samples));
+      index_.push_back(axis.begin);
+      position_.push_back(grid_coordinate(axis.lo, step_.back(), axis.begin));
+    }
+  }
+
+  // Writes the coordinates of the next `count` samples into coordinates[k][0..count).
+  void fill(std::vector<std::vector<double>>& coordinates, std::size_t count)
+  {
+    const std::size_t dimension = axes_.size();
+    std::size_t p = 0;
+    while (p < count)
+    {
+      // The rest of the current row of axis 0, or of the block.
+      const std::int64_t row_end = part_end(axes_[0]);
+      const std::size_t run =
+        std::min(count - p, static_cast<std::size_t>(row_end - index_[0]));
+      double* x = coordinates[0].data() + p;
+      for (std::size_t q = 0; q < run; ++q)
+      {
+        x[q] = grid_coordinate(axes_[0].lo, step_[0], index_[0] + static_cast<std::int64_t>(q));
+      }
+      for (std::size_t k = 1; k < dimension; ++k)
+      {
+        std::fill_n(coordinates[k].data() + p, run, position_[k]);
+      }
+      p += run;
+      index_[0] += static_cast<std::int64_t>(run);
+      // Carry into the higher axes at the end of a row.
+      for (std::size_t k = 0; k + 1 < dimension && index_[k] == part_end(axes_[k]); ++k)
+      {
+        index_[k] = axes_[k].begin;
+        position_[k] = grid_coordinate(axes_[k].lo, step_[k], index_[k]);
+        ++index_[k + 1];
+        position_[k + 1] = grid_coordinate(axes_[k + 1].lo, step_[k + 1], index_[k + 1]);
+      }
+    }
+  }
+
+private:
+  const std::vector<GridAxis>& axes_;
+  std::vector<double> step_;
+  std::vector<std::int64_t> index_;
+  std::vector<double> position_;
+};
+
+// One pool participant's gradient evaluator and the point it evaluates at.
+struct GradientSlot
+{
+  std::unique_ptr<GradientEvaluator> evaluator;
+  std::vector<double> point;
+};
+
+} // namespace
+
+std::size_t grid_part_size(const GridSpec& grid)
+{
+  if (grid.axes.empty())
+  {
+    return 0;
+  }
+  std::size_t total = 1;
+  for (const GridAxis& axis : grid.axes)
+  {
+    const std::int64_t n = part_end(axis) - axis.begin;
+    total *= n > 0 ? static_cast<std::size_t>(n) : 0;
+  }
+  return total;
+}
+
+std::string check_grid(const GridSpec& grid, std::uint32_t inputs, const SampleOptions& options)
+{
+  std::ostringstream message;
+  if (grid.axes.empty() || grid.axes.size() != inputs)
+  {
+    message << "the grid has " << grid.axes.size() << " axes; the object has " << inputs
+            << " free coordinate" << (inputs == 1 ? "" : "s")
+            << " (one axis per free coordinate, at least one)";
+    return message.str();
+  }
+  std::vector<std::int64_t> samples;
+  for (std::size_t a = 0; a < grid.axes.size(); ++a)
+  {
+    const GridAxis& axis = grid.axes[a];
+    if (axis.samples < 1)
+    {
+      message << "grid: axis " << a << " has " << axis.samples
+              << " samples; every axis needs at least 1";
+      return message.str();
+    }
+    const double step = grid_step(axis.lo, axis.hi, axis.samples);
+    if (!std::isfinite(axis.lo) || !std::isfinite(axis.hi) || !std::isfinite(step) ||
+      !(step > 0.0))
+    {
+      message << "grid: axis " << a << ": cannot place " << axis.samples << " samples in ["
+              << axis.lo << ", " << axis.hi << "] (" << (axis.samples > 1 ? "the minimum must be "
+              "less than the maximum, both finite" : "not finite") << ")";
+      return message.str();
+    }
+    const std::int64_t end = part_end(axis);
+    if (axis.begin < 0 || axis.begin >= end || end > axis.samples)
+    {
+      message << "grid: axis " << a << ": the part [" << axis.begin << ", " << end
+              << ") is not a non-empty range of the samples [0, " << axis.samples << ")";
+      return message.str();
+    }
+    samples.push_back(axis.samples);
+  }
+  if (std::string size = check_grid_size(samples, options.max_samples,
+        "SampleOptions::max_samples");
+    !size.empty())
+  {
+    return size + "; refused before allocating anything";
+  }
+  if (options.attribute_count < -1)
+  {
+    return "attribute_count must be -1 (all), 0 (none) or a number of s[] values";
+  }
+  return {};
+}
+
+SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
+  const SampleOptions& options, const SampleSink& sink)
+{
+  SampleResult result;
+  if (!tape)
+  {
+    result.error = "no model to sample";
+    return result;
+  }
+  result.error = check_grid(grid, tape->input_count, options);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  try
+  {
+    const std::size_t dimension = grid.axes.size();
+    const std::size_t available = tape->outputs.empty() ? 0 : tape->outputs.size() - 1;
+    const std::size_t attribute_count = options.attribute_count < 0
+      ? available
+      : std::min(available, static_cast<std::size_t>(options.attribute_count));
+    const FailurePolicy policy = options.failures;
+
+    std::shared_ptr<ThreadPool> pool =
+      options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
+    BatchOptions batch_options;
+    batch_options.pool = pool;
+    BatchEvaluator batch(tape, batch_options);
+    result.threads = batch.threads();
+
+    // Block buffers (structure of arrays, as the batch evaluator reads and writes them).
+    const std::size_t total = grid_part_size(grid);
+    const std::size_t block = std::min(total, block_samples);
+    std::vector<std::vector<double>> coordinates(dimension, std::vector<double>(block));
+    std::vector<const double*> inputs;
+    for (const auto& column : coordinates)
+    {
+      inputs.push_back(column.data());
+    }
+    std::vector<double> values(block);
+    std::vector<std::uint32_t> errors(block);
+    std::vector<std::uint8_t> failed(block);
+    std::vector<std::vector<double>> attributes(attribute_count, std::vector<double>(block));
+    std::vector<double*> attribute_out;
+    std::vector<const double*> attribute_in;
+    for (auto& column : attributes)
+    {
+      attribute_out.push_back(column.data());
+      attribute_in.push_back(column.data());
+    }
+    std::vector<double> gradients(options.gradients ? block * dimension : 0);
+    std::vector<GradientSlot> slots(options.gradients ? static_cast<std::size_t>(pool->size()) : 0);
+
+    // The last successful sample's values, for FailurePolicy::Previous (0 before the first).
+    double previous_value = 0.0;
+    std::vector<double> previous_attributes(attribute_count, 0.0);
+    std::vector<double> previous_gradient(options.gradients ? dimension : 0, 0.0);
+
+    const auto stop = [&](double fraction)
+    {
+      const bool go_on = !options.progress || options.progress(fraction);
+      return !go_on || (options.cancel && options.cancel->load(std::memory_order_relaxed));
+    };
+    PartCursor cursor(grid);
+    if (stop(0.0))
+    {
+      result.cancelled = true;
+      return result;
+    }
+    for (std::size_t first = 0; first < total;)
+    {
+      const std::size_t count = std::min(block, total - first);
+      cursor.fill(coordinates, count);
+      result.errors += batch.evaluate(std::span<const double* const>(inputs), count,
+        values.data(), errors.data(), std::span<double* const>(attribute_out));
+      for (std::size_t p = 0; p < count; ++p)
+      {
+        failed[p] = errors[p] != 0 || std::isnan(values[p]) ? 1 : 0;
+      }
+
+      // Gradients: pointwise evaluators, one per pool slot, over chunks of the block.
+      if (options.gradients)
+      {
+        const std::size_t tasks = (count + gradient_chunk - 1) / gradient_chunk;
+        pool->parallel_for(tasks,
+          [&](std::size_t task, int slot)
+          {
+            GradientSlot& s = slots[static_cast<std::size_t>(slot)];
+            if (!s.evaluator)
+            {
+              s.evaluator = std::make_unique<GradientEvaluator>(tape);
+              s.point.resize(dimension);
+            }
+            const std::size_t end = std::min(count, (task + 1) * gradient_chunk);
+            for (std::size_t p = task * gradient_chunk; p < end; ++p)
+            {
+              if (failed[p])
+              {
+                continue; // the policy fills it in below
+              }
+              for (std::size_t k = 0; k < dimension; ++k)
+              {
+                s.point[k] = coordinates[k][p];
+              }
+              s.evaluator->evaluate(
+                s.point, std::span<double>(gradients.data() + p * dimension, dimension));
+            }
+          });
+      }
+
+      // Failed samples, in order: counted, then NaN or the previous sample's values (the
+      // previous sample is final by then: it succeeded or was itself filled in before).
+      for (std::size_t p = 0; p < count; ++p)
+      {
+        double* g = options.gradients ? gradients.data() + p * dimension : nullptr;
+        if (!failed[p])
+        {
+          previous_value = values[p];
+          for (std::size_t j = 0; j < attribute_count; ++j)
+          {
+            previous_attributes[j] = attributes[j][p];
+          }
+          if (g)
+          {
+            std::copy_n(g, dimension, previous_gradient.data());
+          }
+          continue;
+        }
+        if (result.failed++ == 0)
+        {
+          result.first_failed = static_cast<std::int64_t>(first + p);
+          result.first_error = errors[p];
+          for (std::size_t k = 0; k < dimension; ++k)
+          {
+            result.first_failed_at.push_back(coordinates[k][p]);
+          }
+        }
+        const bool hfp = policy == FailurePolicy::Previous;
+        values[p] = hfp ? previous_value : nan;
+        for (std::size_t j = 0; j < attribute_count; ++j)
+        {
+          attributes[j][p] = hfp ? previous_attributes[j] : nan;
+        }
+        for (std::size_t k = 0; g && k < dimension; ++k)
+        {
+          g[k] = hfp ? previous_gradient[k] : nan;
+        }
+      }
+
+      SampleBlock out;
+      out.first = first;
+      out.count = count;
+      out.coordinates = inputs;
+      out.values = values.data();
+      out.attributes = attribute_in;
+      out.gradients = options.gradients ? gradients.data() : nullptr;
+      out.failed = failed.data();
+      if (sink)
+      {
+        sink(out);
+      }
+      result.samples += count;
+      first += count;
+      // A request to stop after the last block changes nothing: the work is complete.
+      if (stop(static_cast<double>(first) / static_cast<double>(total)) && first < total)
+      {
+        result.cancelled = true;
+        break;
+      }
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    result.error = "not enough memory to sample the grid";
+  }
+  catch (const std::exception& e)
+  {
+    result.error = std::string("sampling failed: ") + e.what();
+  }
+  return result;
+}
+
+} // namespace frep

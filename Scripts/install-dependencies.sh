@@ -14,7 +14,7 @@ packages=(
   libutfcpp-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libopenmpi-dev
   liblz4-dev libdouble-conversion-dev libtheora-dev libglew-dev libtiff-dev libfreetype-dev
   libpng-dev libjpeg-dev libx11-dev libgl-dev libexpat1-dev zlib1g-dev liblzma-dev
-  # the headless renderer's labels (Mapping/Render: DejaVu Sans)
+  # the headless renderer's labels (Multimedia/Render: DejaVu Sans)
   fonts-dejavu-core
   # mpiexec for the ParaView plug-in's distributed test (mpiexec -n 2 pvbatch)
   openmpi-bin

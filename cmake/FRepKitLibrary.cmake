@@ -46,3 +46,17 @@ endfunction()
 function(frepkit_add_public_headers target)
   target_sources(${target} PUBLIC FILE_SET HEADERS FILES ${ARGN})
 endfunction()
+
+# frepkit_set_module_soversion(<VTK modules...>): the library rule for VTK modules. vtk_module_build
+# skips `SOVERSION 0` (it tests the value, and 0 is false in CMake), which leaves the whole
+# version in the SONAME (libFRepKitSources.so.0.1.0); set it here so every FRepKit library's
+# SONAME is lib<Name>.so.<major>.
+function(frepkit_set_module_soversion)
+  foreach(module IN LISTS ARGN)
+    get_target_property(real_target ${module} ALIASED_TARGET)
+    if(NOT real_target)
+      set(real_target ${module})
+    endif()
+    set_target_properties(${real_target} PROPERTIES SOVERSION ${PROJECT_VERSION_MAJOR})
+  endforeach()
+endfunction()

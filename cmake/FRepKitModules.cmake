@@ -33,5 +33,7 @@ vtk_module_build(
   LICENSE_DESTINATION share/licenses/frepkit
   HIERARCHY_DESTINATION lib/vtk/hierarchy/frepkit)
 
+frepkit_set_module_soversion(${FREPKIT_VTK_MODULES})
+
 unset(_frepkit_module_dir)
 unset(_frepkit_module_files)

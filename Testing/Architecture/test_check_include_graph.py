@@ -295,14 +295,6 @@ class RepositoryRulesTest(unittest.TestCase):
         self.assertIn("no-vtk", rules.units["FRep/Language"].flags)
         self.assertEqual(rules.settings["include-root"], ["FRep", "Multimedia"])
 
-    def test_current_layout_rules_parse(self):
-        path = os.path.join(HERE, "current_layout_rules.md")
-        if not os.path.exists(path):
-            self.skipTest("no current-layout rules")
-        with open(path, encoding="utf-8") as handle:
-            rules = checker.parse_rules(handle.read(), path)
-        self.assertIn("FRep/Eval", rules.units)
-
 
 if __name__ == "__main__":
     unittest.main()

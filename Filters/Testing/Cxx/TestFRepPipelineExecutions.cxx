@@ -42,14 +42,6 @@ const char* const Box3D = R"(box(x[3], a[1])
 }
 )";
 
-// Counts the executions (RequestData) of the algorithms it observes, one counter each.
-class ExecutionCounter : public vtkCommand
-{
-public:
-  static ExecutionCounter* New() { return new ExecutionCounter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
 
 // The keys of an output port equal the description of the object it holds.
 bool KeysDescribe(vtkAlgorithm* algorithm, int port = 0)
@@ -109,9 +101,9 @@ int TestFRepPipelineExecutions(int, char*[])
   events->Observe(source);
   events->Observe(slice);
   events->Observe(sampler);
-  vtkNew<ExecutionCounter> sourceRuns;
-  vtkNew<ExecutionCounter> sliceRuns;
-  vtkNew<ExecutionCounter> samplerRuns;
+  vtkNew<frepkit_test::ExecutionCounter> sourceRuns;
+  vtkNew<frepkit_test::ExecutionCounter> sliceRuns;
+  vtkNew<frepkit_test::ExecutionCounter> samplerRuns;
   source->AddObserver(vtkCommand::EndEvent, sourceRuns);
   slice->AddObserver(vtkCommand::EndEvent, sliceRuns);
   sampler->AddObserver(vtkCommand::EndEvent, samplerRuns);
@@ -225,8 +217,8 @@ int TestFRepPipelineExecutions(int, char*[])
     vtkNew<vtkFRepSampler> grid;
     grid->SetInputConnection(boolean->GetOutputPort());
     grid->SetSampleDimensions(6, 7, 8);
-    vtkNew<ExecutionCounter> boxRuns;
-    vtkNew<ExecutionCounter> booleanRuns;
+    vtkNew<frepkit_test::ExecutionCounter> boxRuns;
+    vtkNew<frepkit_test::ExecutionCounter> booleanRuns;
     box->AddObserver(vtkCommand::EndEvent, boxRuns);
     boolean->AddObserver(vtkCommand::EndEvent, booleanRuns);
     const int sources = sourceRuns->Count;
@@ -263,7 +255,7 @@ int TestFRepPipelineExecutions(int, char*[])
     vtkNew<vtkFRepSampler> grid;
     grid->SetInputConnection(cut->GetOutputPort());
     grid->SetSampleDimensions(5, 5, 5);
-    vtkNew<ExecutionCounter> otherRuns;
+    vtkNew<frepkit_test::ExecutionCounter> otherRuns;
     other->AddObserver(vtkCommand::EndEvent, otherRuns);
     grid->UpdateInformation();
     FREPKIT_CHECK(failures, otherRuns->Count == 0 && WholeExtentIs(grid, 5, 5, 5));

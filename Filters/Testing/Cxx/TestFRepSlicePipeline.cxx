@@ -74,14 +74,6 @@ vtkIdType Mismatches(vtkImageData* image,
   return mismatches;
 }
 
-// Counts executions (RequestData) of an algorithm.
-class ExecutionCounter : public vtkCommand
-{
-public:
-  static ExecutionCounter* New() { return new ExecutionCounter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
 }
 
 int TestFRepSlicePipeline(int, char*[])
@@ -101,9 +93,9 @@ int TestFRepSlicePipeline(int, char*[])
   events->Observe(source);
   events->Observe(slice);
   events->Observe(sampler);
-  vtkNew<ExecutionCounter> sourceRuns;
+  vtkNew<frepkit_test::ExecutionCounter> sourceRuns;
   source->AddObserver(vtkCommand::EndEvent, sourceRuns);
-  vtkNew<ExecutionCounter> samplerRuns;
+  vtkNew<frepkit_test::ExecutionCounter> samplerRuns;
   sampler->AddObserver(vtkCommand::EndEvent, samplerRuns);
 
   // An unsliced full object to compare with (its own source: the pipeline's is not touched).

@@ -50,13 +50,6 @@ const char* const ShortAnimationMapping = R"({
   "world": { "resolution": 24 }
 })";
 
-class ExecutionCounter : public vtkCommand
-{
-public:
-  static ExecutionCounter* New() { return new ExecutionCounter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
 
 int TimeSteps(vtkAlgorithm* algorithm)
 {
@@ -86,9 +79,9 @@ int TestMultimediaMapperPipeline(int, char*[])
   events->Observe(source);
   events->Observe(slice);
   events->Observe(mapper);
-  vtkNew<ExecutionCounter> sourceRuns;
-  vtkNew<ExecutionCounter> sliceRuns;
-  vtkNew<ExecutionCounter> mapperRuns;
+  vtkNew<frepkit_test::ExecutionCounter> sourceRuns;
+  vtkNew<frepkit_test::ExecutionCounter> sliceRuns;
+  vtkNew<frepkit_test::ExecutionCounter> mapperRuns;
   source->AddObserver(vtkCommand::EndEvent, sourceRuns);
   slice->AddObserver(vtkCommand::EndEvent, sliceRuns);
   mapper->AddObserver(vtkCommand::EndEvent, mapperRuns);

@@ -1,5 +1,6 @@
-// Small helpers shared by the Sources tests: a failing CHECK that reports file:line and an
-// observer that counts error and warning events (vtkTest::ErrorObserver keeps the text).
+// Small helpers shared by the modules' tests: a failing CHECK that reports file:line, an observer
+// that counts error and warning events (vtkTest::ErrorObserver keeps the text), and one that
+// counts executions.
 #ifndef FRepKitSourcesTestHelpers_h
 #define FRepKitSourcesTestHelpers_h
 
@@ -56,6 +57,15 @@ public:
   int Warnings = 0;
   std::string ErrorText;
   std::string WarningText;
+};
+
+/// Counts the executions (RequestData) of an algorithm: observe its EndEvent.
+class ExecutionCounter : public vtkCommand
+{
+public:
+  static ExecutionCounter* New() { return new ExecutionCounter; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
 };
 }
 

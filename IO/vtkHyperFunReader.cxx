@@ -93,7 +93,7 @@ int vtkHyperFunReader::RequestInformation(vtkInformation* request,
     return 1;
   }
   const frep::ast::Program& program = *parsed;
-  const int first = frep::ast::select_object(program, "my_model");
+  const int first = frep::ast::select_default_object(program);
   if (first >= 0)
   {
     this->ObjectNames->InsertNextValue(program.objects[first].name);

@@ -239,7 +239,7 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   int object = -1;
   if (objectName.empty())
   {
-    object = frep::ast::select_object(program, "my_model");
+    object = frep::ast::select_default_object(program);
   }
   else
   {

@@ -35,7 +35,7 @@ ModelAnalysis analyse_model(const std::string& text, const std::string& file_nam
         analysis.diagnostics.push_back(std::move(diagnostic));
       analysis.objects.push_back(std::move(summary));
     }
-    analysis.default_object = frep::ast::select_object(*parsed.program, "my_model");
+    analysis.default_object = frep::ast::select_default_object(*parsed.program);
   }
   analysis.seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

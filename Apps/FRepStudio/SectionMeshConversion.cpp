@@ -2,7 +2,7 @@
 
 #include "vtkFRepPolygonizer.h"
 
-#include "mesh_writers/vertex_colours.h"
+#include "Compiler/attribute_rgb.h"
 
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -16,9 +16,9 @@ namespace frepstudio
 
 SectionColouring colouring_for(const frep::Tape& tape, int s_dim)
 {
-  if (frepkit::tape_sets_colours(tape, s_dim))
+  if (frep::tape_sets_colours(tape, s_dim))
     return SectionColouring::Rgb;
-  if (s_dim >= 1 && frepkit::tape_sets_attributes(tape, 1))
+  if (s_dim >= 1 && frep::tape_sets_attributes(tape, 1))
     return SectionColouring::Attribute;
   return SectionColouring::Plain;
 }
@@ -33,7 +33,8 @@ vtkSmartPointer<vtkPolyData> to_poly_data(const frep::mesh::Surface& surface,
 
   if (colouring == SectionColouring::Rgb)
   {
-    const std::vector<frepkit::Rgb> colours = frepkit::colours_from_attributes(surface);
+    const std::vector<frep::AttributeRgb> colours = frep::attribute_colours(
+      surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
     if (static_cast<vtkIdType>(colours.size()) == point_count)
     {
       vtkNew<vtkUnsignedCharArray> rgb;
@@ -42,7 +43,7 @@ vtkSmartPointer<vtkPolyData> to_poly_data(const frep::mesh::Surface& surface,
       rgb->SetNumberOfTuples(point_count);
       for (vtkIdType i = 0; i < point_count; ++i)
         for (int c = 0; c < 3; ++c)
-          rgb->SetTypedComponent(i, c, frepkit::colour_byte(colours[i][c]));
+          rgb->SetTypedComponent(i, c, frep::colour_byte(colours[i][c]));
       poly->GetPointData()->SetScalars(rgb);
     }
   }

@@ -1,8 +1,8 @@
 #include "SpreadsheetRenderer.h"
 
 #include "SectionMeshConversion.h"
-#include "mesh_writers/vertex_colours.h"
 
+#include "Compiler/attribute_rgb.h"
 #include "Mesh/surface.h"
 #include "Render/image.h"
 #include "Render/mesh_renderer.h"
@@ -69,7 +69,10 @@ QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::Threa
   mesh.normals = result.surface.normals;
   if (colouring_for(*tape, request.s_dim) == SectionColouring::Rgb)
   {
-    for (const frepkit::Rgb& c : frepkit::colours_from_attributes(result.surface))
+    const frep::mesh::Surface& surface = result.surface;
+    for (const frep::AttributeRgb& c : frep::attribute_colours(surface.attributes,
+           static_cast<std::size_t>(surface.attribute_count),
+           surface.point_count()))
       for (float component : c)
         colours.push_back(frep::render::srgb_to_linear(component));
     mesh.colours = colours;

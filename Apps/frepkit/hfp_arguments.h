@@ -6,6 +6,8 @@
 // is; unknown tokens are ignored with a message), hence a parser of its own.
 #pragma once
 
+#include "Language/ast.h"
+
 #include <array>
 #include <ostream>
 #include <string>
@@ -22,7 +24,7 @@ constexpr int kHfpGridMax = 4095;
 struct HfpArguments
 {
   std::string model;
-  std::string object = "my_model";
+  std::string object{ frep::ast::default_object_name }; ///< hfp -o (matched exactly)
   /// Which x index (0-based) the polygonizer's X, Y, Z axes drive.
   std::array<int, 3> xyz_mapping{ 0, 1, 2 };
   /// -x's list: values of the fixed coordinates (entries at the X/Y/Z positions are unused).

@@ -1,12 +1,12 @@
 #include "hfp_command.h"
 
+#include "Compiler/attribute_rgb.h"
 #include "Eval/point_evaluator.h"
 #include "atomic_output.h"
 #include "coordinate_mapping.h"
 #include "hfp_arguments.h"
 #include "interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
-#include "mesh_writers/vertex_colours.h"
 #include "model_loading.h"
 #include "progress_bar.h"
 #include "section_writers/cli_writer.h"
@@ -313,7 +313,8 @@ int run_hfp(const std::vector<std::string>& args)
   }
   if (a.attributes)
   {
-    document.colours = colours_from_attributes(surface);
+    document.colours = frep::attribute_colours(
+      surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   }
   for (std::size_t i = 0; i < files.size(); ++i)
   {

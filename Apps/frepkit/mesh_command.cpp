@@ -1,8 +1,8 @@
 #include "mesh_command.h"
 
+#include "Compiler/attribute_rgb.h"
 #include "coordinate_mapping.h"
 #include "mesh_writers/mesh_format.h"
-#include "mesh_writers/vertex_colours.h"
 #include "model_loading.h"
 #include "sampling_grid.h"
 #include "surface_output.h"
@@ -121,8 +121,8 @@ int run_mesh(const MeshOptions& options)
   job.format = format;
   job.ascii = options.ascii;
   job.normals = !options.no_normals;
-  job.colours = tape_sets_colours(*job.tape, object.s_dim);
-  job.attributes = tape_sets_attributes(*job.tape, static_cast<std::size_t>(object.s_dim));
+  job.colours = frep::tape_sets_colours(*job.tape, object.s_dim);
+  job.attributes = frep::tape_sets_attributes(*job.tape, static_cast<std::size_t>(object.s_dim));
   job.quiet = options.quiet;
   job.output = options.output;
   job.name = object.name;

@@ -58,7 +58,7 @@ int choose_object(const LoadedProgram& loaded, const std::optional<std::string>&
     }
     return found;
   }
-  return frep::ast::select_object(program, "my_model");
+  return frep::ast::select_default_object(program);
 }
 
 void require_parsed(const LoadedProgram& loaded)

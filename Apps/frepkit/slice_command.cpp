@@ -1,9 +1,9 @@
 #include "slice_command.h"
 
+#include "Compiler/attribute_rgb.h"
 #include "atomic_output.h"
 #include "coordinate_mapping.h"
 #include "mesh_writers/mesh_format.h"
-#include "mesh_writers/vertex_colours.h"
 #include "mesh_writers/vtp_writer.h"
 #include "model_loading.h"
 #include "number_format.h"
@@ -175,8 +175,8 @@ int run_slice(const SliceOptions& options)
   const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
   const std::shared_ptr<const frep::Tape> tape =
     model->specialise(mapping.specialisation(options.parameters));
-  const bool colours = tape_sets_colours(*tape, object.s_dim);
-  const bool attributes = tape_sets_attributes(*tape, static_cast<std::size_t>(object.s_dim));
+  const bool colours = frep::tape_sets_colours(*tape, object.s_dim);
+  const bool attributes = frep::tape_sets_attributes(*tape, static_cast<std::size_t>(object.s_dim));
   const std::string fixed = describe_fixed(mapping);
 
   if (kind == SliceKind::Mesh)
@@ -221,7 +221,9 @@ int run_slice(const SliceOptions& options)
     document.source = options.model;
     if (colours)
     {
-      document.colours = colours_from_attributes(result.surface);
+      document.colours = frep::attribute_colours(result.surface.attributes,
+        static_cast<std::size_t>(result.surface.attribute_count),
+        result.surface.point_count());
     }
     write_vtp(document, output.stream());
     failed = result.statistics.failed_samples;

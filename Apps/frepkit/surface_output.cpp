@@ -1,7 +1,7 @@
 #include "surface_output.h"
 
+#include "Compiler/attribute_rgb.h"
 #include "atomic_output.h"
-#include "mesh_writers/vertex_colours.h"
 #include "number_format.h"
 #include "sampling_grid.h"
 #include "surface_extraction.h"
@@ -34,7 +34,8 @@ int write_surface_file(SurfaceJob job)
   document.normals = job.normals;
   if (job.colours)
   {
-    document.colours = colours_from_attributes(surface);
+    document.colours = frep::attribute_colours(
+      surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   }
   write_mesh(document, job.format, job.ascii, output.stream());
   output.commit();

@@ -31,6 +31,11 @@ int find_object(const Program& program, std::string_view name)
   return -1;
 }
 
+int select_default_object(const Program& program)
+{
+  return select_object(program, default_object_name);
+}
+
 int select_object(const Program& program, std::string_view name, NameMatch match)
 {
   if (program.objects.empty())

@@ -244,10 +244,17 @@ enum class NameMatch : std::uint8_t
 };
 
 /// The object the original would evaluate for a requested name (hfinterpreter.cpp): the object
-/// called `name`, else the FIRST object of the file. Callers pass "my_model" when the user named
-/// none. Returns -1 only when the program has no object.
+/// called `name`, else the FIRST object of the file. Returns -1 only when the program has no
+/// object. With no name from the user, use select_default_object.
 int select_object(const Program& program, std::string_view name,
   NameMatch match = NameMatch::IgnoreCase);
+
+/// The name of the object evaluated when none is named (the original's default, hfp -o).
+inline constexpr std::string_view default_object_name = "my_model";
+
+/// The object evaluated when none is named: `my_model` (any case), else the first object of the
+/// file; -1 only when the program has no object. Every tool and filter uses this one rule.
+int select_default_object(const Program& program);
 
 /// Index of the object called `name` (case-insensitive), or -1.
 int find_object(const Program& program, std::string_view name);

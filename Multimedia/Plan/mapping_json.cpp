@@ -124,7 +124,9 @@ std::string at(const std::string& place, std::size_t index)
   return place + "[" + std::to_string(index) + "]";
 }
 
-// Collects errors while walking the document; each reader returns nullopt after reporting.
+// The typed field access every section reader shares: each helper checks one JSON value,
+// reports a problem at its place in the document ("coordinates.x4[0].range", "render.width")
+// and then returns nullopt; the errors are collected in order.
 class Reader
 {
 public:
@@ -161,6 +163,23 @@ public:
     return true;
   }
 
+  /// j[key], or null after reporting it missing at place.key ("missing (expected ...)").
+  const Json* required(const Json& j,
+    const std::string& place,
+    std::string_view key,
+    std::string_view expected)
+  {
+    const auto it = j.find(std::string(key));
+    if (it == j.end())
+    {
+      error(join(place, key),
+        "missing" +
+          (expected.empty() ? std::string() : " (expected " + std::string(expected) + ")"));
+      return nullptr;
+    }
+    return &*it;
+  }
+
   std::optional<double> number(const Json& j, const std::string& place)
   {
     if (!j.is_number())
@@ -172,6 +191,17 @@ public:
     if (!std::isfinite(v))
     {
       error(place, "expected a finite number");
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  std::optional<double> positive(const Json& j, const std::string& place)
+  {
+    const std::optional<double> v = number(j, place);
+    if (v && !(*v > 0))
+    {
+      error(place, "must be > 0");
       return std::nullopt;
     }
     return v;
@@ -319,125 +349,133 @@ void optional_key(const Json& j, std::string_view key, const std::string& place,
   }
 }
 
-std::optional<Curve> read_curve(Reader& r, const Json& j, const std::string& place)
+// --- curves -------------------------------------------------------------------------------------
+
+// A curve by name: "linear" or "ease-in-out".
+std::optional<Curve> read_curve_name(Reader& r, const std::string& s, const std::string& place)
 {
   Curve curve;
+  if (s == "linear")
+  {
+    return curve;
+  }
+  if (s == "ease-in-out")
+  {
+    curve.kind = Curve::Kind::EaseInOut;
+    return curve;
+  }
+  r.error(place,
+    "unknown curve \"" + s +
+      "\" (expected linear, ease-in-out, or an object with kind power, table or expression)");
+  return std::nullopt;
+}
+
+// { "kind": "power", "exponent": e }
+bool read_power_curve(Reader& r, const Json& j, const std::string& place, Curve& curve)
+{
+  r.object(j, place, { "kind", "exponent" });
+  curve.kind = Curve::Kind::Power;
+  const Json* e = r.required(j, place, "exponent", "");
+  const std::optional<double> v = e ? r.number(*e, join(place, "exponent")) : std::nullopt;
+  curve.exponent = v.value_or(curve.exponent);
+  return v.has_value();
+}
+
+// { "kind": "table", "points": [[u, v], ...] }
+bool read_table_curve(Reader& r, const Json& j, const std::string& place, Curve& curve)
+{
+  r.object(j, place, { "kind", "points" });
+  curve.kind = Curve::Kind::Table;
+  const auto p = j.find("points");
+  const std::string pp = join(place, "points");
+  if (p == j.end() || !p->is_array())
+  {
+    r.error(pp, p == j.end() ? "missing" : "expected an array of [u, v] pairs");
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < p->size(); ++i)
+  {
+    const auto point = r.fixed_numbers<2>((*p)[i], at(pp, i));
+    ok = ok && point.has_value();
+    curve.table.push_back(point.value_or(std::array<double, 2>{}));
+  }
+  return ok;
+}
+
+// { "kind": "expression", "expression": "..." }
+bool read_expression_curve(Reader& r, const Json& j, const std::string& place, Curve& curve)
+{
+  r.object(j, place, { "kind", "expression" });
+  curve.kind = Curve::Kind::Expression;
+  const Json* e = r.required(j, place, "expression", "");
+  const std::optional<std::string> s = e ? r.string(*e, join(place, "expression")) : std::nullopt;
+  curve.expression = s.value_or("");
+  return s.has_value();
+}
+
+// The curve kinds that take a value, with the key a curve error belongs to.
+struct CurveKind
+{
+  std::string_view name;
+  std::string_view detail_key;
+  bool (*read)(Reader&, const Json&, const std::string&, Curve&);
+};
+constexpr CurveKind curve_kinds[] = {
+  { "power", "exponent", read_power_curve },
+  { "table", "points", read_table_curve },
+  { "expression", "expression", read_expression_curve },
+};
+
+std::optional<Curve> read_curve(Reader& r, const Json& j, const std::string& place)
+{
   if (j.is_string())
   {
-    const std::string s = j.get<std::string>();
-    if (s == "linear")
-    {
-      return curve;
-    }
-    if (s == "ease-in-out")
-    {
-      curve.kind = Curve::Kind::EaseInOut;
-      return curve;
-    }
-    r.error(place,
-      "unknown curve \"" + s +
-        "\" (expected linear, ease-in-out, or an object with kind power, table or expression)");
-    return std::nullopt;
+    return read_curve_name(r, j.get<std::string>(), place);
   }
   if (!j.is_object())
   {
     r.error(place, std::string("expected a curve name or object, found ") + j.type_name());
     return std::nullopt;
   }
-  const auto kind = j.find("kind");
-  if (kind == j.end())
-  {
-    r.error(
-      join(place, "kind"), "missing (expected linear, ease-in-out, power, table, expression)");
-    return std::nullopt;
-  }
-  const std::optional<std::string> k = r.string(*kind, join(place, "kind"));
+  const Json* kind = r.required(j, place, "kind", "linear, ease-in-out, power, table, expression");
+  const std::optional<std::string> k = kind ? r.string(*kind, join(place, "kind")) : std::nullopt;
   if (!k)
   {
     return std::nullopt;
   }
-  std::string detail_key; // where a curve error belongs
+  Curve curve;
   if (*k == "linear" || *k == "ease-in-out")
   {
     r.object(j, place, { "kind" });
     curve.kind = *k == "linear" ? Curve::Kind::Linear : Curve::Kind::EaseInOut;
     return curve;
   }
-  else if (*k == "power")
+  for (const CurveKind& c : curve_kinds)
   {
-    r.object(j, place, { "kind", "exponent" });
-    curve.kind = Curve::Kind::Power;
-    detail_key = "exponent";
-    const auto e = j.find("exponent");
-    if (e == j.end())
+    if (c.name != *k)
     {
-      r.error(join(place, "exponent"), "missing");
-      return std::nullopt;
+      continue;
     }
-    const std::optional<double> v = r.number(*e, join(place, "exponent"));
-    if (!v)
+    if (!c.read(r, j, place, curve))
     {
       return std::nullopt;
     }
-    curve.exponent = *v;
+    // The curve itself: exponent > 0, a table from u = 0 to 1, an expression that compiles.
+    const UnitCurve::Result checked = UnitCurve::make(curve);
+    if (!checked.ok())
+    {
+      r.error(join(place, c.detail_key), checked.error);
+      return std::nullopt;
+    }
+    return curve;
   }
-  else if (*k == "table")
-  {
-    r.object(j, place, { "kind", "points" });
-    curve.kind = Curve::Kind::Table;
-    detail_key = "points";
-    const auto p = j.find("points");
-    const std::string pp = join(place, "points");
-    if (p == j.end() || !p->is_array())
-    {
-      r.error(pp, p == j.end() ? "missing" : "expected an array of [u, v] pairs");
-      return std::nullopt;
-    }
-    bool ok = true;
-    for (std::size_t i = 0; i < p->size(); ++i)
-    {
-      const auto point = r.fixed_numbers<2>((*p)[i], at(pp, i));
-      ok = ok && point.has_value();
-      curve.table.push_back(point.value_or(std::array<double, 2>{}));
-    }
-    if (!ok)
-    {
-      return std::nullopt;
-    }
-  }
-  else if (*k == "expression")
-  {
-    r.object(j, place, { "kind", "expression" });
-    curve.kind = Curve::Kind::Expression;
-    detail_key = "expression";
-    const auto e = j.find("expression");
-    if (e == j.end())
-    {
-      r.error(join(place, "expression"), "missing");
-      return std::nullopt;
-    }
-    const std::optional<std::string> s = r.string(*e, join(place, "expression"));
-    if (!s)
-    {
-      return std::nullopt;
-    }
-    curve.expression = *s;
-  }
-  else
-  {
-    r.error(join(place, "kind"),
-      "unknown curve kind \"" + *k + "\" (expected linear, ease-in-out, power, table, expression)");
-    return std::nullopt;
-  }
-  // The curve itself: exponent > 0, a table from u = 0 to 1, an expression that compiles.
-  const UnitCurve::Result checked = UnitCurve::make(curve);
-  if (!checked.ok())
-  {
-    r.error(join(place, detail_key), checked.error);
-    return std::nullopt;
-  }
-  return curve;
+  r.error(join(place, "kind"),
+    "unknown curve kind \"" + *k + "\" (expected linear, ease-in-out, power, table, expression)");
+  return std::nullopt;
 }
+
+// --- channels -----------------------------------------------------------------------------------
 
 // Node values from "step" over the range, lo to hi inclusive. The last value is hi exactly
 // when (hi - lo) / step is a whole number up to 1e-9 (0.1 steps would otherwise drift past it).
@@ -472,32 +510,10 @@ std::optional<std::vector<double>> step_values(Reader& r,
   return values;
 }
 
-std::optional<Channel> read_channel(Reader& r,
-  const Json& j,
-  const std::string& place,
-  WorldSystem system)
+// Every channel may have range, curve and target; the other keys depend on its type.
+void check_channel_keys(Reader& r, const Json& j, const std::string& place, Channel::Type type)
 {
-  if (!j.is_object())
-  {
-    r.error(place, std::string("expected a channel object, found ") + j.type_name());
-    return std::nullopt;
-  }
-  const auto type = j.find("type");
-  if (type == j.end())
-  {
-    r.error(join(place, "type"), "missing (expected " + name_list(channel_types) + ")");
-    return std::nullopt;
-  }
-  Channel c;
-  const std::optional<Channel::Type> t =
-    r.choice(*type, join(place, "type"), "type", channel_types);
-  if (!t)
-  {
-    return std::nullopt;
-  }
-  c.type = *t;
-  const std::size_t errors_before = r.errors.size();
-  switch (c.type)
+  switch (type)
   {
     case Channel::Type::World:
       r.object(j, place, { "type", "range", "curve", "target", "axis" });
@@ -524,7 +540,11 @@ std::optional<Channel> read_channel(Reader& r,
       r.object(j, place, { "type", "range", "curve", "target", "parameter", "voice" });
       break;
   }
+}
 
+// range, target and curve: the keys every channel type shares.
+void read_channel_map(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
   optional_key(j,
     "range",
     place,
@@ -540,154 +560,205 @@ std::optional<Channel> read_channel(Reader& r,
     place,
     c.curve,
     [&](const Json& v, const std::string& p) { return read_curve(r, v, p); });
+}
 
-  auto required = [&](std::string_view key, std::string_view expected) -> const Json*
+// "world": the axis of the world system (x, y, z; r, phi, z; r, theta, phi).
+void read_world_channel(Reader& r,
+  const Json& j,
+  const std::string& place,
+  WorldSystem system,
+  Channel& c)
+{
+  const auto& axes = system == WorldSystem::Cartesian     ? cartesian_axes
+                     : system == WorldSystem::Cylindrical ? cylindrical_axes
+                                                          : spherical_axes;
+  const std::string what = name_of(world_systems, system) + " axis";
+  if (const Json* a = r.required(j, place, "axis", name_list(axes)))
   {
-    const auto it = j.find(std::string(key));
-    if (it == j.end())
+    if (auto v = r.choice(*a, join(place, "axis"), what, axes))
     {
-      r.error(join(place, key),
-        "missing" +
-          (expected.empty() ? std::string() : " (expected " + std::string(expected) + ")"));
-      return nullptr;
+      c.axis = *v;
     }
-    return &*it;
-  };
+  }
+}
 
+// A spreadsheet channel's node values: "values", or "step" over the range.
+void read_node_values(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  const bool has_step = j.contains("step");
+  const bool has_values = j.contains("values");
+  if (has_step == has_values)
+  {
+    r.error(place,
+      has_step ? "give either \"step\" or \"values\", not both"
+               : "the node values are missing: give \"step\" (with a range) or \"values\"");
+  }
+  else if (has_values)
+  {
+    if (auto v = r.numbers(j["values"], join(place, "values")))
+    {
+      if (v->empty())
+      {
+        r.error(join(place, "values"), "at least one value is needed");
+      }
+      else if (v->size() > max_node_values)
+      {
+        r.error(join(place, "values"), "more than " + std::to_string(max_node_values) + " values");
+      }
+      c.values = *v;
+    }
+  }
+  else if (auto step = r.number(j["step"], join(place, "step")))
+  {
+    if (!j.contains("range"))
+    {
+      r.error(join(place, "step"), "needs a \"range\" to step over");
+    }
+    else if (c.range)
+    {
+      if (auto v = step_values(r, *c.range, *step, join(place, "step")))
+      {
+        c.values = *v;
+      }
+    }
+  }
+}
+
+// "spreadsheet": the grid axis and the node values.
+void read_spreadsheet_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  if (const Json* a = r.required(j, place, "axis", "columns, rows, layers"))
+  {
+    if (auto v = r.choice(*a, join(place, "axis"), "spreadsheet axis", grid_axes))
+    {
+      c.grid_axis = *v;
+    }
+  }
+  read_node_values(r, j, place, c);
+}
+
+// "fixed": the value.
+void read_fixed_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  if (const Json* v = r.required(j, place, "value", ""))
+  {
+    if (auto x = r.number(*v, join(place, "value")))
+    {
+      c.value = *x;
+    }
+  }
+}
+
+// "colour" (a colour map) and "transparency": what they apply to.
+void read_photometric_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  if (c.type == Channel::Type::Colour)
+  {
+    optional_key(j,
+      "colormap",
+      place,
+      c.colormap,
+      [&](const Json& v, const std::string& p) -> std::optional<std::string>
+      {
+        auto s = r.string(v, p);
+        if (s && !is_colour_channel_name(*s))
+        {
+          r.error(p, "unknown colour map \"" + *s + "\" (expected " + colour_channel_names() + ")");
+          return std::nullopt;
+        }
+        return s;
+      });
+  }
+  optional_key(j,
+    "applies_to",
+    place,
+    c.applies_to,
+    [&](const Json& v, const std::string& p)
+    { return r.choice(v, p, "target of the channel", photometric_targets); });
+}
+
+// "transformation": the transform and its (non-zero) vector.
+void read_transformation_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  optional_key(j,
+    "transform",
+    place,
+    c.transform,
+    [&](const Json& v, const std::string& p) { return r.choice(v, p, "transform", transforms); });
+  optional_key(j,
+    "vector",
+    place,
+    c.vector,
+    [&](const Json& v, const std::string& p) -> std::optional<std::array<double, 3>>
+    {
+      auto a = r.fixed_numbers<3>(v, p);
+      if (a && (*a)[0] == 0 && (*a)[1] == 0 && (*a)[2] == 0)
+      {
+        r.error(p, "the vector must not be zero");
+        return std::nullopt;
+      }
+      return a;
+    });
+}
+
+// "audio": the parameter and the voice.
+void read_audio_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  optional_key(j,
+    "parameter",
+    place,
+    c.audio_parameter,
+    [&](const Json& v, const std::string& p)
+    { return r.choice(v, p, "audio parameter", audio_parameters); });
+  optional_key(j,
+    "voice",
+    place,
+    c.voice,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 0, max_voice); });
+}
+
+std::optional<Channel> read_channel(Reader& r,
+  const Json& j,
+  const std::string& place,
+  WorldSystem system)
+{
+  if (!j.is_object())
+  {
+    r.error(place, std::string("expected a channel object, found ") + j.type_name());
+    return std::nullopt;
+  }
+  const Json* type = r.required(j, place, "type", name_list(channel_types));
+  const std::optional<Channel::Type> t =
+    type ? r.choice(*type, join(place, "type"), "type", channel_types) : std::nullopt;
+  if (!t)
+  {
+    return std::nullopt;
+  }
+  Channel c;
+  c.type = *t;
+  const std::size_t errors_before = r.errors.size();
+  check_channel_keys(r, j, place, c.type);
+  read_channel_map(r, j, place, c);
   switch (c.type)
   {
     case Channel::Type::World:
-    {
-      const auto& axes = system == WorldSystem::Cartesian     ? cartesian_axes
-                         : system == WorldSystem::Cylindrical ? cylindrical_axes
-                                                              : spherical_axes;
-      const std::string what = name_of(world_systems, system) + " axis";
-      if (const Json* a = required("axis", name_list(axes)))
-      {
-        if (auto v = r.choice(*a, join(place, "axis"), what, axes))
-        {
-          c.axis = *v;
-        }
-      }
+      read_world_channel(r, j, place, system, c);
       break;
-    }
     case Channel::Type::Spreadsheet:
-    {
-      if (const Json* a = required("axis", "columns, rows, layers"))
-      {
-        if (auto v = r.choice(*a, join(place, "axis"), "spreadsheet axis", grid_axes))
-        {
-          c.grid_axis = *v;
-        }
-      }
-      const bool has_step = j.contains("step");
-      const bool has_values = j.contains("values");
-      if (has_step == has_values)
-      {
-        r.error(place,
-          has_step ? "give either \"step\" or \"values\", not both"
-                   : "the node values are missing: give \"step\" (with a range) or \"values\"");
-      }
-      else if (has_values)
-      {
-        if (auto v = r.numbers(j["values"], join(place, "values")))
-        {
-          if (v->empty())
-          {
-            r.error(join(place, "values"), "at least one value is needed");
-          }
-          else if (v->size() > max_node_values)
-          {
-            r.error(
-              join(place, "values"), "more than " + std::to_string(max_node_values) + " values");
-          }
-          c.values = *v;
-        }
-      }
-      else if (auto step = r.number(j["step"], join(place, "step")))
-      {
-        if (!j.contains("range"))
-        {
-          r.error(join(place, "step"), "needs a \"range\" to step over");
-        }
-        else if (c.range)
-        {
-          if (auto v = step_values(r, *c.range, *step, join(place, "step")))
-          {
-            c.values = *v;
-          }
-        }
-      }
+      read_spreadsheet_channel(r, j, place, c);
       break;
-    }
     case Channel::Type::Fixed:
-      if (const Json* v = required("value", ""))
-      {
-        if (auto x = r.number(*v, join(place, "value")))
-        {
-          c.value = *x;
-        }
-      }
+      read_fixed_channel(r, j, place, c);
       break;
     case Channel::Type::Colour:
-      optional_key(j,
-        "colormap",
-        place,
-        c.colormap,
-        [&](const Json& v, const std::string& p) -> std::optional<std::string>
-        {
-          auto s = r.string(v, p);
-          if (s && !is_colour_channel_name(*s))
-          {
-            r.error(
-              p, "unknown colour map \"" + *s + "\" (expected " + colour_channel_names() + ")");
-            return std::nullopt;
-          }
-          return s;
-        });
-      [[fallthrough]];
     case Channel::Type::Transparency:
-      optional_key(j,
-        "applies_to",
-        place,
-        c.applies_to,
-        [&](const Json& v, const std::string& p)
-        { return r.choice(v, p, "target of the channel", photometric_targets); });
+      read_photometric_channel(r, j, place, c);
       break;
     case Channel::Type::Transformation:
-      optional_key(j,
-        "transform",
-        place,
-        c.transform,
-        [&](const Json& v, const std::string& p)
-        { return r.choice(v, p, "transform", transforms); });
-      optional_key(j,
-        "vector",
-        place,
-        c.vector,
-        [&](const Json& v, const std::string& p) -> std::optional<std::array<double, 3>>
-        {
-          auto a = r.fixed_numbers<3>(v, p);
-          if (a && (*a)[0] == 0 && (*a)[1] == 0 && (*a)[2] == 0)
-          {
-            r.error(p, "the vector must not be zero");
-            return std::nullopt;
-          }
-          return a;
-        });
+      read_transformation_channel(r, j, place, c);
       break;
     case Channel::Type::Audio:
-      optional_key(j,
-        "parameter",
-        place,
-        c.audio_parameter,
-        [&](const Json& v, const std::string& p)
-        { return r.choice(v, p, "audio parameter", audio_parameters); });
-      optional_key(j,
-        "voice",
-        place,
-        c.voice,
-        [&](const Json& v, const std::string& p) { return r.integer(v, p, 0, max_voice); });
+      read_audio_channel(r, j, place, c);
       break;
     case Channel::Type::Dynamic:
       break;
@@ -699,14 +770,12 @@ std::optional<Channel> read_channel(Reader& r,
   return c;
 }
 
-void read_path(Reader& r, const Json& j, const std::string& place, Path& path)
+// --- the animation's path
+// -------------------------------------------------------------------------
+
+// "coordinates": the names of the dynamic coordinates the path runs through.
+void read_path_coordinates(Reader& r, const Json& j, const std::string& place, Path& path)
 {
-  if (!r.object(
-        j, place, { "coordinates", "points", "interpolation", "closed", "timing", "key_times" }))
-  {
-    return;
-  }
-  const std::size_t errors_before = r.errors.size();
   const auto coords = j.find("coordinates");
   if (coords == j.end())
   {
@@ -727,6 +796,11 @@ void read_path(Reader& r, const Json& j, const std::string& place, Path& path)
       }
     }
   }
+}
+
+// "points": one array of values per point.
+void read_path_points(Reader& r, const Json& j, const std::string& place, Path& path)
+{
   const auto points = j.find("points");
   const std::string pp = join(place, "points");
   if (points == j.end())
@@ -747,6 +821,18 @@ void read_path(Reader& r, const Json& j, const std::string& place, Path& path)
       }
     }
   }
+}
+
+void read_path(Reader& r, const Json& j, const std::string& place, Path& path)
+{
+  if (!r.object(
+        j, place, { "coordinates", "points", "interpolation", "closed", "timing", "key_times" }))
+  {
+    return;
+  }
+  const std::size_t errors_before = r.errors.size();
+  read_path_coordinates(r, j, place, path);
+  read_path_points(r, j, place, path);
   optional_key(j,
     "interpolation",
     place,
@@ -802,6 +888,276 @@ std::string syntax_message(const std::string& what)
   }
   const std::size_t colon = what.find(": ", head);
   return colon == std::string::npos ? what.substr(head) : what.substr(colon + 2);
+}
+
+// --- the document's sections
+// ----------------------------------------------------------------------
+
+// The parsed document; a duplicate key is reported in `r` (by name: the parser's callback does
+// not know the path), a syntax error as the only error of `result` (then nullopt).
+std::optional<Json> parse_document(Reader& r, const std::string& json_text, LoadResult& result)
+{
+  std::vector<std::set<std::string>> keys;
+  const Json::parser_callback_t duplicates = [&](int, Json::parse_event_t event, Json& parsed)
+  {
+    if (event == Json::parse_event_t::object_start)
+    {
+      keys.emplace_back();
+    }
+    else if (event == Json::parse_event_t::object_end && !keys.empty())
+    {
+      keys.pop_back();
+    }
+    else if (event == Json::parse_event_t::key && !keys.empty() &&
+             !keys.back().insert(parsed.get<std::string>()).second)
+    {
+      r.error("", "duplicate key \"" + parsed.get<std::string>() + "\"");
+    }
+    return true;
+  };
+  try
+  {
+    return Json::parse(json_text, duplicates);
+  }
+  catch (const Json::parse_error& e)
+  {
+    result.errors.push_back({ line_column(json_text, e.byte), syntax_message(e.what()) });
+    return std::nullopt;
+  }
+}
+
+// "version", "object", "parameters".
+void read_header(Reader& r, const Json& doc, Spec& spec)
+{
+  optional_key(doc,
+    "version",
+    "",
+    spec.version,
+    [&](const Json& v, const std::string& p) -> std::optional<int>
+    {
+      auto n = r.integer(v, p, 0, 1'000'000);
+      if (n && *n != 1)
+      {
+        r.error(p, "unsupported version " + std::to_string(*n) + " (this build reads version 1)");
+        return std::nullopt;
+      }
+      return n;
+    });
+  optional_key(doc,
+    "object",
+    "",
+    spec.object,
+    [&](const Json& v, const std::string& p) { return r.string(v, p); });
+  optional_key(doc,
+    "parameters",
+    "",
+    spec.parameters,
+    [&](const Json& v, const std::string& p) { return r.numbers(v, p); });
+}
+
+// "world": system, resolution, iso.
+void read_world(Reader& r, const Json& doc, WorldSettings& world)
+{
+  const auto w = doc.find("world");
+  if (w == doc.end() || !r.object(*w, "world", { "system", "resolution", "iso" }))
+  {
+    return;
+  }
+  optional_key(*w,
+    "system",
+    "world",
+    world.system,
+    [&](const Json& v, const std::string& p)
+    { return r.choice(v, p, "world system", world_systems); });
+  optional_key(*w,
+    "resolution",
+    "world",
+    world.resolution,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 2, max_resolution); });
+  optional_key(*w,
+    "iso",
+    "world",
+    world.iso,
+    [&](const Json& v, const std::string& p) { return r.number(v, p); });
+}
+
+// "coordinates": the channels of each coordinate, in the file's order (the world channels'
+// axis names depend on the world system, read before).
+void read_coordinates(Reader& r, const Json& doc, Spec& spec)
+{
+  const auto coords = doc.find("coordinates");
+  if (coords == doc.end())
+  {
+    r.error("coordinates", "missing (the channels of each coordinate)");
+    return;
+  }
+  if (!coords->is_object())
+  {
+    r.error("coordinates", std::string("expected an object, found ") + coords->type_name());
+    return;
+  }
+  for (const auto& item : coords->items())
+  {
+    const std::string place = join("coordinates", item.key());
+    CoordinateMapping m;
+    m.name = item.key();
+    if (m.name.empty())
+    {
+      r.error(place, "a coordinate needs a name");
+    }
+    if (!item.value().is_array() || item.value().empty())
+    {
+      r.error(place,
+        item.value().is_array()
+          ? std::string("at least one channel is needed")
+          : std::string("expected an array of channels, found ") + item.value().type_name());
+      continue;
+    }
+    for (std::size_t k = 0; k < item.value().size(); ++k)
+    {
+      if (auto c = read_channel(r, item.value()[k], at(place, k), spec.world.system))
+      {
+        m.channels.push_back(*c);
+      }
+    }
+    spec.coordinates.push_back(std::move(m));
+  }
+}
+
+// "animation": duration, fps, path.
+void read_animation(Reader& r, const Json& doc, AnimationSettings& animation)
+{
+  const auto a = doc.find("animation");
+  if (a == doc.end() || !r.object(*a, "animation", { "duration", "fps", "path" }))
+  {
+    return;
+  }
+  auto positive = [&](const Json& v, const std::string& p) { return r.positive(v, p); };
+  optional_key(*a, "duration", "animation", animation.duration, positive);
+  optional_key(*a, "fps", "animation", animation.fps, positive);
+  if (const auto p = a->find("path"); p != a->end())
+  {
+    Path path;
+    read_path(r, *p, "animation.path", path);
+    animation.path = path;
+  }
+}
+
+// "spreadsheet": cell_size, spacing, labels.
+void read_spreadsheet(Reader& r, const Json& doc, SpreadsheetSettings& spreadsheet)
+{
+  const auto s = doc.find("spreadsheet");
+  if (s == doc.end() || !r.object(*s, "spreadsheet", { "cell_size", "spacing", "labels" }))
+  {
+    return;
+  }
+  optional_key(*s,
+    "cell_size",
+    "spreadsheet",
+    spreadsheet.cell_size,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 16, max_picture_size); });
+  optional_key(*s,
+    "spacing",
+    "spreadsheet",
+    spreadsheet.spacing,
+    [&](const Json& v, const std::string& p) -> std::optional<double>
+    {
+      auto x = r.number(v, p);
+      if (x && (*x < 0 || *x > 10))
+      {
+        r.error(p, "must be from 0 to 10 (a fraction of the cell)");
+        return std::nullopt;
+      }
+      return x;
+    });
+  optional_key(*s,
+    "labels",
+    "spreadsheet",
+    spreadsheet.labels,
+    [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+}
+
+// "render.view_box": [xmin, ymin, zmin, xmax, ymax, zmax].
+void read_view_box(Reader& r, const Json& render, RenderSettings& rs)
+{
+  const auto vb = render.find("view_box");
+  if (vb == render.end())
+  {
+    return;
+  }
+  if (const auto box = r.fixed_numbers<6>(*vb, "render.view_box"))
+  {
+    bool ok = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      ok = ok && (*box)[k] < (*box)[k + 3];
+    }
+    if (ok)
+    {
+      rs.view_box = *box;
+    }
+    else
+    {
+      r.error("render.view_box", "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min < max");
+    }
+  }
+}
+
+// "render": picture size, colours, camera angles, inset, view box, colour source.
+void read_render(Reader& r, const Json& doc, RenderSettings& rs)
+{
+  const auto g = doc.find("render");
+  if (g == doc.end() || !r.object(*g,
+                          "render",
+                          { "width",
+                            "height",
+                            "background",
+                            "colour",
+                            "azimuth",
+                            "elevation",
+                            "inset",
+                            "colour_source",
+                            "view_box" }))
+  {
+    return;
+  }
+  auto size = [&](const Json& v, const std::string& p)
+  { return r.integer(v, p, 16, max_picture_size); };
+  auto angle = [&](const Json& v, const std::string& p) { return r.number(v, p); };
+  auto colour = [&](const Json& v, const std::string& p) { return r.rgb(v, p); };
+  optional_key(*g, "width", "render", rs.width, size);
+  optional_key(*g, "height", "render", rs.height, size);
+  optional_key(*g, "background", "render", rs.background, colour);
+  optional_key(*g, "colour", "render", rs.colour, colour);
+  optional_key(*g, "azimuth", "render", rs.azimuth, angle);
+  optional_key(*g, "elevation", "render", rs.elevation, angle);
+  optional_key(*g,
+    "inset",
+    "render",
+    rs.inset,
+    [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
+  read_view_box(r, *g, rs);
+  optional_key(*g,
+    "colour_source",
+    "render",
+    rs.colour_source,
+    [&](const Json& v, const std::string& p)
+    { return r.choice(v, p, "colour source", colour_sources); });
+}
+
+// "audio": sample_rate.
+void read_audio(Reader& r, const Json& doc, AudioSettings& audio)
+{
+  const auto au = doc.find("audio");
+  if (au == doc.end() || !r.object(*au, "audio", { "sample_rate" }))
+  {
+    return;
+  }
+  optional_key(*au,
+    "sample_rate",
+    "audio",
+    audio.sample_rate,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 8000, 384000); });
 }
 
 Json curve_json(const Curve& c)
@@ -950,38 +1306,12 @@ LoadResult load_mapping(const std::string& json_text)
 {
   LoadResult result;
   Reader r;
-  Json doc;
-  // Duplicate keys would silently keep only the last value: report them (by name; the
-  // parser's callback does not know the path).
-  std::vector<std::set<std::string>> keys;
-  const Json::parser_callback_t duplicates = [&](int, Json::parse_event_t event, Json& parsed)
+  const std::optional<Json> doc = parse_document(r, json_text, result);
+  if (!doc)
   {
-    if (event == Json::parse_event_t::object_start)
-    {
-      keys.emplace_back();
-    }
-    else if (event == Json::parse_event_t::object_end && !keys.empty())
-    {
-      keys.pop_back();
-    }
-    else if (event == Json::parse_event_t::key && !keys.empty() &&
-             !keys.back().insert(parsed.get<std::string>()).second)
-    {
-      r.error("", "duplicate key \"" + parsed.get<std::string>() + "\"");
-    }
-    return true;
-  };
-  try
-  {
-    doc = Json::parse(json_text, duplicates);
-  }
-  catch (const Json::parse_error& e)
-  {
-    result.errors.push_back({ line_column(json_text, e.byte), syntax_message(e.what()) });
     return result;
   }
-  Spec& spec = result.spec;
-  if (!r.object(doc,
+  if (r.object(*doc,
         "",
         { "version",
           "object",
@@ -993,212 +1323,15 @@ LoadResult load_mapping(const std::string& json_text)
           "render",
           "audio" }))
   {
-    result.errors = std::move(r.errors);
-    return result;
+    Spec& spec = result.spec;
+    read_header(r, *doc, spec);
+    read_world(r, *doc, spec.world); // first: the world channels' axis names depend on it
+    read_coordinates(r, *doc, spec);
+    read_animation(r, *doc, spec.animation);
+    read_spreadsheet(r, *doc, spec.spreadsheet);
+    read_render(r, *doc, spec.render);
+    read_audio(r, *doc, spec.audio);
   }
-  optional_key(doc,
-    "version",
-    "",
-    spec.version,
-    [&](const Json& v, const std::string& p) -> std::optional<int>
-    {
-      auto n = r.integer(v, p, 0, 1'000'000);
-      if (n && *n != 1)
-      {
-        r.error(p, "unsupported version " + std::to_string(*n) + " (this build reads version 1)");
-        return std::nullopt;
-      }
-      return n;
-    });
-  optional_key(doc,
-    "object",
-    "",
-    spec.object,
-    [&](const Json& v, const std::string& p) { return r.string(v, p); });
-  optional_key(doc,
-    "parameters",
-    "",
-    spec.parameters,
-    [&](const Json& v, const std::string& p) { return r.numbers(v, p); });
-
-  // World first: the axis names of the world channels depend on the system.
-  if (const auto w = doc.find("world");
-      w != doc.end() && r.object(*w, "world", { "system", "resolution", "iso" }))
-  {
-    optional_key(*w,
-      "system",
-      "world",
-      spec.world.system,
-      [&](const Json& v, const std::string& p)
-      { return r.choice(v, p, "world system", world_systems); });
-    optional_key(*w,
-      "resolution",
-      "world",
-      spec.world.resolution,
-      [&](const Json& v, const std::string& p) { return r.integer(v, p, 2, max_resolution); });
-    optional_key(*w,
-      "iso",
-      "world",
-      spec.world.iso,
-      [&](const Json& v, const std::string& p) { return r.number(v, p); });
-  }
-
-  const auto coords = doc.find("coordinates");
-  if (coords == doc.end())
-  {
-    r.error("coordinates", "missing (the channels of each coordinate)");
-  }
-  else if (!coords->is_object())
-  {
-    r.error("coordinates", std::string("expected an object, found ") + coords->type_name());
-  }
-  else
-  {
-    for (const auto& item : coords->items())
-    {
-      const std::string place = join("coordinates", item.key());
-      CoordinateMapping m;
-      m.name = item.key();
-      if (m.name.empty())
-      {
-        r.error(place, "a coordinate needs a name");
-      }
-      if (!item.value().is_array() || item.value().empty())
-      {
-        r.error(place,
-          item.value().is_array()
-            ? std::string("at least one channel is needed")
-            : std::string("expected an array of channels, found ") + item.value().type_name());
-        continue;
-      }
-      for (std::size_t k = 0; k < item.value().size(); ++k)
-      {
-        if (auto c = read_channel(r, item.value()[k], at(place, k), spec.world.system))
-        {
-          m.channels.push_back(*c);
-        }
-      }
-      spec.coordinates.push_back(std::move(m));
-    }
-  }
-
-  if (const auto a = doc.find("animation");
-      a != doc.end() && r.object(*a, "animation", { "duration", "fps", "path" }))
-  {
-    auto positive = [&](const Json& v, const std::string& p) -> std::optional<double>
-    {
-      auto x = r.number(v, p);
-      if (x && !(*x > 0))
-      {
-        r.error(p, "must be > 0");
-        return std::nullopt;
-      }
-      return x;
-    };
-    optional_key(*a, "duration", "animation", spec.animation.duration, positive);
-    optional_key(*a, "fps", "animation", spec.animation.fps, positive);
-    if (const auto p = a->find("path"); p != a->end())
-    {
-      Path path;
-      read_path(r, *p, "animation.path", path);
-      spec.animation.path = path;
-    }
-  }
-
-  if (const auto s = doc.find("spreadsheet");
-      s != doc.end() && r.object(*s, "spreadsheet", { "cell_size", "spacing", "labels" }))
-  {
-    optional_key(*s,
-      "cell_size",
-      "spreadsheet",
-      spec.spreadsheet.cell_size,
-      [&](const Json& v, const std::string& p) { return r.integer(v, p, 16, max_picture_size); });
-    optional_key(*s,
-      "spacing",
-      "spreadsheet",
-      spec.spreadsheet.spacing,
-      [&](const Json& v, const std::string& p) -> std::optional<double>
-      {
-        auto x = r.number(v, p);
-        if (x && (*x < 0 || *x > 10))
-        {
-          r.error(p, "must be from 0 to 10 (a fraction of the cell)");
-          return std::nullopt;
-        }
-        return x;
-      });
-    optional_key(*s,
-      "labels",
-      "spreadsheet",
-      spec.spreadsheet.labels,
-      [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
-  }
-
-  if (const auto g = doc.find("render"); g != doc.end() && r.object(*g,
-                                                             "render",
-                                                             { "width",
-                                                               "height",
-                                                               "background",
-                                                               "colour",
-                                                               "azimuth",
-                                                               "elevation",
-                                                               "inset",
-                                                               "colour_source",
-                                                               "view_box" }))
-  {
-    RenderSettings& rs = spec.render;
-    auto size = [&](const Json& v, const std::string& p)
-    { return r.integer(v, p, 16, max_picture_size); };
-    auto angle = [&](const Json& v, const std::string& p) { return r.number(v, p); };
-    auto colour = [&](const Json& v, const std::string& p) { return r.rgb(v, p); };
-    optional_key(*g, "width", "render", rs.width, size);
-    optional_key(*g, "height", "render", rs.height, size);
-    optional_key(*g, "background", "render", rs.background, colour);
-    optional_key(*g, "colour", "render", rs.colour, colour);
-    optional_key(*g, "azimuth", "render", rs.azimuth, angle);
-    optional_key(*g, "elevation", "render", rs.elevation, angle);
-    optional_key(*g,
-      "inset",
-      "render",
-      rs.inset,
-      [&](const Json& v, const std::string& p) { return r.boolean(v, p); });
-    if (const auto vb = g->find("view_box"); vb != g->end())
-    {
-      if (const auto box = r.fixed_numbers<6>(*vb, "render.view_box"))
-      {
-        bool ok = true;
-        for (int k = 0; k < 3; ++k)
-        {
-          ok = ok && (*box)[k] < (*box)[k + 3];
-        }
-        if (ok)
-        {
-          rs.view_box = *box;
-        }
-        else
-        {
-          r.error("render.view_box", "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min < max");
-        }
-      }
-    }
-    optional_key(*g,
-      "colour_source",
-      "render",
-      rs.colour_source,
-      [&](const Json& v, const std::string& p)
-      { return r.choice(v, p, "colour source", colour_sources); });
-  }
-
-  if (const auto au = doc.find("audio");
-      au != doc.end() && r.object(*au, "audio", { "sample_rate" }))
-  {
-    optional_key(*au,
-      "sample_rate",
-      "audio",
-      spec.audio.sample_rate,
-      [&](const Json& v, const std::string& p) { return r.integer(v, p, 8000, 384000); });
-  }
-
   result.errors = std::move(r.errors);
   return result;
 }

@@ -1,5 +1,6 @@
 #include "Render/mesh_setup.h"
 
+#include "Render/normal_matrix.h"
 #include "Render/render_parallel.h"
 
 #include <algorithm>
@@ -107,38 +108,12 @@ SetupVertex make_vertex(const Projection& pr, const Vec& p, const Vec& n, const 
   return v;
 }
 
-// Row-major 4 x 4 applied to a point, and the normal matrix (cofactors of the 3 x 3 part, signed
-// so that normals keep their side under mirrors).
+// Row-major 4 x 4 applied to a point (its normal matrix: Render/normal_matrix.h).
 Vec transform_point(const std::array<double, 16>& m, const Vec& p)
 {
   return { m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3],
     m[4] * p[0] + m[5] * p[1] + m[6] * p[2] + m[7],
     m[8] * p[0] + m[9] * p[1] + m[10] * p[2] + m[11] };
-}
-
-std::array<double, 9> normal_matrix(const std::array<double, 16>& m)
-{
-  const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
-               i = m[10];
-  // cof(A) = det(A) A^-T; multiplying by sign(det) keeps the orientation.
-  std::array<double, 9> cof{ e * i - f * h,
-    -(d * i - f * g),
-    d * h - e * g,
-    -(b * i - c * h),
-    a * i - c * g,
-    -(a * h - b * g),
-    b * f - c * e,
-    -(a * f - c * d),
-    a * e - b * d };
-  const double det = a * cof[0] + b * cof[1] + c * cof[2];
-  if (det < 0.0)
-  {
-    for (double& v : cof)
-    {
-      v = -v;
-    }
-  }
-  return cof;
 }
 
 struct Chunk

@@ -2,6 +2,9 @@
 
 #include "Plan/colour_maps.h"
 #include "Plan/unit_map.h"
+#include "Render/normal_matrix.h"
+
+#include "Compiler/attribute_rgb.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,21 +32,10 @@ struct Affine
   explicit Affine(const std::array<double, 16>& matrix)
     : m(matrix)
   {
-    const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
-                 i = m[10];
-    const double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
-    orientation_preserving = det >= 0;
-    // cofactor matrix = det * inverse transpose (the scale does not matter: normals are
-    // renormalised)
-    normal_matrix = { e * i - f * h,
-      -(d * i - f * g),
-      d * h - e * g,
-      -(b * i - c * h),
-      a * i - c * g,
-      -(a * h - b * g),
-      b * f - c * e,
-      -(a * f - c * d),
-      a * e - b * d };
+    // The cofactor matrix, unsigned: a mirror flips the triangles instead (Render/normal_matrix.h).
+    const render::Matrix3 linear = render::linear_part(m);
+    normal_matrix = render::cofactor_matrix(linear);
+    orientation_preserving = render::determinant(linear, normal_matrix) >= 0;
   }
 
   bool is_identity() const
@@ -63,10 +55,7 @@ struct Affine
 
   std::array<double, 3> normal(const std::array<double, 3>& n) const
   {
-    const auto& q = normal_matrix;
-    return { q[0] * n[0] + q[1] * n[1] + q[2] * n[2],
-      q[3] * n[0] + q[4] * n[1] + q[5] * n[2],
-      q[6] * n[0] + q[7] * n[1] + q[8] * n[2] };
+    return render::apply(normal_matrix, n);
   }
 };
 
@@ -267,15 +256,14 @@ Section make_section(const Model& model,
   }
   else if (vc.source == VertexColouring::Source::Attributes && surface.attribute_count > 0)
   {
-    const int m = surface.attribute_count;
+    // s[1..3] as RGB, the rule of every output (Compiler/attribute_rgb.h).
+    const auto m = static_cast<std::size_t>(surface.attribute_count);
     section.colours.resize(3 * n);
     for (std::size_t i = 0; i < n; ++i)
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        const float a = c < m ? surface.attributes[i * m + c] : 0.0f;
-        section.colours[3 * i + c] = std::isfinite(a) ? std::clamp(a, 0.0f, 1.0f) : 0.0f;
-      }
+      const AttributeRgb rgb = attribute_rgb(surface.attributes.data() + i * m, m);
+      std::copy(
+        rgb.begin(), rgb.end(), section.colours.begin() + static_cast<std::ptrdiff_t>(3 * i));
     }
   }
 
@@ -300,28 +288,18 @@ Section make_section(const Model& model,
     if (!surface.normals.empty())
     {
       const std::array<double, 9> j = world->jacobian(p);
-      // inverse transpose up to scale = cofactor matrix
-      const std::array<double, 9> cof{ j[4] * j[8] - j[5] * j[7],
-        -(j[3] * j[8] - j[5] * j[6]),
-        j[3] * j[7] - j[4] * j[6],
-        -(j[1] * j[8] - j[2] * j[7]),
-        j[0] * j[8] - j[2] * j[6],
-        -(j[0] * j[7] - j[1] * j[6]),
-        j[1] * j[5] - j[2] * j[4],
-        -(j[0] * j[5] - j[2] * j[3]),
-        j[0] * j[4] - j[1] * j[3] };
-      const double det = j[0] * cof[0] + j[1] * cof[1] + j[2] * cof[2];
-      if (i == 0 && det < 0)
+      // The Jacobian's normal matrix (Render/normal_matrix.h): signed, so normals stay outward.
+      const render::Matrix3 q = render::normal_matrix(j);
+      if (i == 0 && render::determinant(j) < 0)
       {
         flip = !flip; // a reversed target mirrors the shape: keep the triangles outward
       }
-      const double sign = det < 0 ? -1.0 : 1.0;
       std::array<double, 3> nm{ 0, 0, 0 };
       for (int r = 0; r < 3; ++r)
       {
         for (int c = 0; c < 3; ++c)
         {
-          nm[r] += sign * cof[r * 3 + c] * surface.normals[3 * i + c];
+          nm[r] += q[r * 3 + c] * surface.normals[3 * i + c];
         }
       }
       nm = normalised(identity ? nm : transform.normal(nm));

@@ -1,10 +1,10 @@
 // Unit tests of frepkit's parts that do not need a model run: the mesh writers on a hand-made
 // tetrahedron, closing contours along the box (CLI layers), hfp's argument grammar, --map/--fix
 // parsing and the --box/--grid rules.
+#include "Compiler/attribute_rgb.h"
 #include "coordinate_mapping.h"
 #include "hfp_arguments.h"
 #include "mesh_writers/mesh_format.h"
-#include "mesh_writers/vertex_colours.h"
 #include "sampling_grid.h"
 #include "section_writers/cli_writer.h"
 #include "section_writers/contour_loops.h"
@@ -82,7 +82,8 @@ TEST(MeshWriters, AsciiStlObjPlyAreComplete)
   EXPECT_EQ(count(obj, "\nvn "), 4u);
   EXPECT_NE(obj.find("\nf 1//1 3//3 2//2\n"), std::string::npos) << "1-based indices";
 
-  mesh.colours = colours_from_attributes(surface);
+  mesh.colours = frep::attribute_colours(
+    surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   const std::string ply = write(mesh, MeshFormat::Ply);
   EXPECT_NE(ply.find("element vertex 4\n"), std::string::npos);
   EXPECT_NE(ply.find("property uchar red\n"), std::string::npos);
@@ -94,11 +95,12 @@ TEST(MeshWriters, AsciiStlObjPlyAreComplete)
 TEST(MeshWriters, ColoursFollowHfpCtClamped)
 {
   const frep::mesh::Surface surface = tetrahedron();
-  const std::vector<Rgb> colours = colours_from_attributes(surface);
+  const std::vector<Rgb> colours = frep::attribute_colours(
+    surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   ASSERT_EQ(colours.size(), 4u);
   EXPECT_EQ(colours[0], (Rgb{ 1, 0, 0 }));
   EXPECT_EQ(colours[3], (Rgb{ 1, 0, 0.5f })) << "s[] outside [0, 1] is clamped";
-  EXPECT_EQ(colour_byte(0.5f), 128);
+  EXPECT_EQ(frep::colour_byte(0.5f), 128);
 }
 
 TEST(MeshWriters, VrmlCarriesNormalsAndColours)
@@ -113,7 +115,8 @@ TEST(MeshWriters, VrmlCarriesNormalsAndColours)
   EXPECT_NE(plain.find("normalPerVertex TRUE"), std::string::npos);
   EXPECT_EQ(plain.find("colorPerVertex"), std::string::npos);
   EXPECT_EQ(count(plain, ", -1,"), 4u);
-  mesh.colours = colours_from_attributes(surface);
+  mesh.colours = frep::attribute_colours(
+    surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   mesh.normals = false;
   const std::string coloured = write(mesh, MeshFormat::Vrml);
   EXPECT_NE(coloured.find("colorPerVertex TRUE"), std::string::npos);
@@ -125,7 +128,8 @@ TEST(MeshWriters, PovMesh2)
   const frep::mesh::Surface surface = tetrahedron();
   MeshDocument mesh;
   mesh.surface = &surface;
-  mesh.colours = colours_from_attributes(surface);
+  mesh.colours = frep::attribute_colours(
+    surface.attributes, static_cast<std::size_t>(surface.attribute_count), surface.point_count());
   const std::string pov = write(mesh, MeshFormat::Pov);
   EXPECT_NE(pov.find("mesh2 {"), std::string::npos);
   EXPECT_NE(pov.find("vertex_vectors {\n\t\t4,"), std::string::npos);

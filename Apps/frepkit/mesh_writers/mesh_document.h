@@ -17,7 +17,8 @@ using Rgb = std::array<float, 3>;
 struct MeshDocument
 {
   const frep::mesh::Surface* surface = nullptr;
-  /// One colour per point (see vertex_colours.h), or empty: the formats then carry none.
+  /// One colour per point (frep::attribute_colours, Compiler/attribute_rgb.h), or empty: the
+  /// formats then carry none.
   std::vector<Rgb> colours;
   std::string name = "frep"; ///< object name: VRML DEF, STL solid name, PLY/OBJ comment
   std::string source;        ///< the model file, for comments

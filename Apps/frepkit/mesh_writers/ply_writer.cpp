@@ -1,7 +1,8 @@
 #include "ply_writer.h"
 
 #include "binary_output.h"
-#include "vertex_colours.h"
+
+#include "Compiler/attribute_rgb.h"
 
 #include <string>
 
@@ -47,7 +48,7 @@ void write_ply(const MeshDocument& mesh, std::ostream& out)
     {
       for (float component : mesh.colours[p])
       {
-        buffer.u8(colour_byte(component));
+        buffer.u8(frep::colour_byte(component));
       }
     }
   }

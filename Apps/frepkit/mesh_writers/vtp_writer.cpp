@@ -1,6 +1,6 @@
 #include "vtp_writer.h"
 
-#include "vertex_colours.h"
+#include "Compiler/attribute_rgb.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -88,7 +88,8 @@ void write_vtp(const MeshDocument& mesh, std::ostream& out)
     {
       for (int k = 0; k < 3; ++k)
       {
-        colours->SetTypedComponent(p, k, colour_byte(mesh.colours[static_cast<std::size_t>(p)][k]));
+        colours->SetTypedComponent(
+          p, k, frep::colour_byte(mesh.colours[static_cast<std::size_t>(p)][k]));
       }
     }
     poly->GetPointData()->SetScalars(colours);

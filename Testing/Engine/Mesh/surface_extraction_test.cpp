@@ -37,7 +37,7 @@ std::shared_ptr<const Tape> compile(const std::string& text, std::vector<double>
   {
     return nullptr;
   }
-  const int object = ast::select_object(*parsed.program, "my_model");
+  const int object = ast::select_default_object(*parsed.program);
   auto compiled = Model::compile(parsed.program, object);
   EXPECT_TRUE(compiled.model);
   Specialisation spec;
@@ -442,7 +442,7 @@ TEST(SurfaceExtraction, ExternalModelsGiveClosedMeshes)
     text << in.rdbuf();
     const ParseResult parsed = parse_program(text.str(), entry.path().string());
     ASSERT_TRUE(parsed.ok()) << entry.path();
-    const int object = ast::select_object(*parsed.program, "my_model");
+    const int object = ast::select_default_object(*parsed.program);
     auto compiled = Model::compile(parsed.program, object);
     ASSERT_TRUE(compiled.model) << entry.path();
     if (compiled.model->x_dim() != 3)

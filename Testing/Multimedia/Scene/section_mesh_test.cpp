@@ -27,7 +27,7 @@ std::shared_ptr<const frep::Model> compile(const std::string& text)
 {
   const frep::ParseResult parsed = frep::parse_program(text, "<test>");
   EXPECT_TRUE(parsed.ok());
-  const int object = frep::ast::select_object(*parsed.program, "my_model");
+  const int object = frep::ast::select_default_object(*parsed.program);
   return frep::Model::compile(parsed.program, object).model;
 }
 

@@ -1,0 +1,140 @@
+// frepkit map, phase 5: the animation frames, resumable.
+#include "map_phases.h"
+
+#include "user_error.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace frepkit::map_run
+{
+namespace
+{
+
+// What the frames depend on: a frame on disk is reused only when the model, the mapping and
+// the overrides are the ones it was rendered with.
+std::string fingerprint(const std::string& model_text,
+  const std::string& mapping_text,
+  const MapOptions& options)
+{
+  std::ostringstream key;
+  key << model_text << '\0' << mapping_text << '\0' << options.object.value_or("") << '\0'
+      << options.resolution.value_or(0) << '\0' << options.frames.value_or(0) << '\0';
+  for (double a : options.parameters)
+  {
+    key << a << ',';
+  }
+  char hex[32];
+  std::snprintf(hex, sizeof hex, "%016zx", std::hash<std::string>{}(key.str()));
+  return hex;
+}
+
+// Creates the frames' directory and writes this run's fingerprint there; true when the frames
+// on disk were rendered with the same one (and --force is not given), so they can be kept.
+bool prepare_resume(const MapOptions& options, const MapInputs& in, const FrameFiles& frames)
+{
+  std::error_code ec;
+  fs::create_directories(frames.directory, ec);
+  if (ec)
+  {
+    throw UserError("cannot create " + frames.directory.string() + ": " + ec.message());
+  }
+  const std::string key = fingerprint(read_file(options.model, "model"), in.mapping_text, options);
+  const fs::path key_file = frames.directory / ".fingerprint";
+  bool resume = false;
+  if (!options.force && fs::exists(key_file))
+  {
+    std::ifstream old_file(key_file);
+    std::string old;
+    std::getline(old_file, old);
+    resume = old == key;
+  }
+  write_text_file(key_file, key + "\n");
+  return resume;
+}
+
+// The manifest's entry of the frames, with every frame's file, time and values.
+nlohmann::json frames_json(const MapInputs& in, const FrameFiles& files)
+{
+  const mapping::Plan& plan = in.plan;
+  nlohmann::json frames = nlohmann::json::array();
+  for (std::size_t k = 0; k < plan.frames.size(); ++k)
+  {
+    nlohmann::json j = sample_json(plan.frames[k], in.coordinates.names);
+    j["file"] = std::string("frames/") + files.name(k);
+    j["time"] = plan.frames[k].time;
+    j["path_parameter"] = plan.frames[k].path_parameter;
+    frames.push_back(j);
+  }
+  return { { "file", "frames/" + files.pattern },
+    { "kind", "frames" },
+    { "count", plan.frames.size() },
+    { "fps", in.spec.animation.fps },
+    { "width", in.spec.render.width },
+    { "height", in.spec.render.height },
+    { "frames", frames } };
+}
+
+} // namespace
+
+std::string FrameFiles::name(std::size_t k) const
+{
+  char file[64];
+  std::snprintf(file, sizeof file, pattern.c_str(), static_cast<int>(k));
+  return file;
+}
+
+fs::path FrameFiles::file(std::size_t k) const
+{
+  return directory / name(k);
+}
+
+void render_frames(const MapOptions& options,
+  const MapInputs& in,
+  MapWorkers& workers,
+  const FrameFiles& frames,
+  MapRecord& record)
+{
+  const auto t0 = Clock::now();
+  const bool resume = prepare_resume(options, in, frames);
+  const mapping::Plan& plan = in.plan;
+  const mapping::RenderSettings& render = in.spec.render;
+  const frep::render::Camera camera =
+    mapping::plan_camera(plan, render, static_cast<double>(render.width) / render.height);
+  std::atomic<std::size_t> reused_count{ 0 };
+  Ledger frame_ledger;
+  workers.parallel(plan.frames.size(),
+    [&](std::size_t k, int worker)
+    {
+      const fs::path path = frames.file(k);
+      if (resume && fs::exists(path))
+      {
+        ++reused_count;
+        workers.advance();
+        return;
+      }
+      const mapping::Sample& frame = plan.frames[k];
+      const auto m0 = Clock::now();
+      const mapping::Section section = workers.section(frame, worker);
+      const auto r0 = Clock::now();
+      frep::render::Image picture =
+        mapping::render_sample(plan, section, frame, camera, render.width, render.height, render);
+      mapping::decorate_frame(picture, plan, frame, render, workers.kit(worker));
+      const auto w0 = Clock::now();
+      write_png_file(path, picture);
+      frame_ledger.add(std::chrono::duration<double>(r0 - m0).count(),
+        std::chrono::duration<double>(w0 - r0).count(),
+        seconds_since(w0));
+      workers.advance();
+    });
+  const std::size_t reused = reused_count;
+  record.files.push_back(frames_json(in, frames));
+  record.stages.push_back({ "frames",
+    seconds_since(t0),
+    std::to_string(plan.frames.size()) + " frames" +
+      (reused ? " (" + std::to_string(reused) + " kept from an earlier run)" : "") +
+      frame_ledger.text() });
+}
+
+} // namespace frepkit::map_run

@@ -184,8 +184,9 @@ TEST(ConformanceSuite, LoadsEveryCase)
   // The figures the suite's README announces.
   EXPECT_EQ(conformance_cases, 291);
   EXPECT_EQ(conformance_points, 1082);
-  EXPECT_GE(model_cases, 8);
-  EXPECT_GE(model_points, 8 * 343);
+  // ../shared/hyperfun/models: 17 models from 8 sources.
+  EXPECT_EQ(model_cases, 17);
+  EXPECT_EQ(model_points, 5831);
 }
 
 class ConformanceParse : public ::testing::TestWithParam<std::string>

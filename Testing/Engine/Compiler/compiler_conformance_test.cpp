@@ -7,8 +7,8 @@
 #include "conformance_runner.h"
 
 #include "Compiler/model.h"
-#include "Semantics/interpreter.h"
 #include "Eval/point_evaluator.h"
+#include "Semantics/interpreter.h"
 
 #include <gtest/gtest.h>
 
@@ -35,68 +35,6 @@ std::filesystem::path shared_dir()
   return FREPKIT_SHARED_DIR;
 }
 
-class CompiledSession final : public EvaluationSession
-{
-public:
-  explicit CompiledSession(std::shared_ptr<const Model> model)
-    : model_(std::move(model))
-  {
-  }
-  void set_parameters(std::span<const double> a) override
-  {
-    a_.assign(a.begin(), a.end());
-    a_.resize(static_cast<std::size_t>(model_->a_dim()), 0.0);
-    evaluator_.reset();
-  }
-  void reset_attributes() override {}
-  Outcome evaluate(std::span<const double> x) override
-  {
-    if (!evaluator_)
-    {
-      evaluator_ = std::make_unique<PointEvaluator>(model_->tape(a_));
-    }
-    std::vector<double> out(evaluator_->tape().outputs.size());
-    Outcome o;
-    const int id = evaluator_->evaluate(x, out);
-    o.a = a_;
-    if (id > 0)
-    {
-      const TapeError& e = evaluator_->tape().errors.at(static_cast<std::size_t>(id - 1));
-      o.error = RuntimeError{
-        e.message, e.location, e.message.find("Tips of the segment") != std::string::npos
-      };
-      return o;
-    }
-    o.value = out[0];
-    o.s.assign(out.begin() + 1, out.end());
-    return o;
-  }
-
-private:
-  std::shared_ptr<const Model> model_;
-  std::vector<double> a_;
-  std::unique_ptr<PointEvaluator> evaluator_;
-};
-
-class CompiledEvaluator final : public CaseEvaluator
-{
-public:
-  std::string name() const override { return "compiled"; }
-  bool requires_exact(const std::string&) const override { return true; }
-  std::unique_ptr<EvaluationSession> start(std::shared_ptr<const ast::Program> program,
-    int object_index,
-    std::string& why_not) const override
-  {
-    Model::CompileResult r = Model::compile(std::move(program), object_index);
-    if (!r.model)
-    {
-      why_not = format_diagnostics(r.diagnostics);
-      return nullptr;
-    }
-    return std::make_unique<CompiledSession>(r.model);
-  }
-};
-
 bool same(double a, double b)
 {
   return (std::isnan(a) && std::isnan(b)) ||
@@ -111,7 +49,8 @@ TEST(CompilerConformance, EveryFreshCaseMatchesTheOriginalAndTheInterpreter)
   const CompiledEvaluator compiled;
   Tally total;
   std::vector<std::string> problems;
-  int compared = 0, fallbacks = 0;
+  int compared = 0;
+  std::vector<std::string> fallbacks; // cases whose object runs on the interpreter
   double specialise_seconds = 0;
   int specialisations = 0;
   for (const ConformanceCase& c : cases)
@@ -135,7 +74,10 @@ TEST(CompilerConformance, EveryFreshCaseMatchesTheOriginalAndTheInterpreter)
     // Direct comparison with the reference interpreter, every point from a fresh state.
     Model::CompileResult r = Model::compile(parsed.program, index);
     ASSERT_TRUE(r.model) << c.id() << ": " << format_diagnostics(r.diagnostics);
-    fallbacks += r.model->is_compiled() ? 0 : 1;
+    if (!r.model->is_compiled())
+    {
+      fallbacks.push_back(c.id());
+    }
     for (std::size_t p = 0; p < c.points.size(); ++p)
     {
       const CasePoint& point = c.points[p];
@@ -229,7 +171,7 @@ TEST(CompilerConformance, EveryFreshCaseMatchesTheOriginalAndTheInterpreter)
             << " exact, " << total.close << " close, " << total.wrong << " wrong, "
             << total.errors_matched << "/" << total.errors << " errors matched, "
             << total.unsupported << " unsupported\n"
-            << "compiled vs interpreter: " << compared << " points; " << fallbacks
+            << "compiled vs interpreter: " << compared << " points; " << fallbacks.size()
             << " objects fell back to the interpreter\n"
             << "specialisation: " << specialisations << " tapes, mean "
             << (specialisations ? 1e6 * specialise_seconds / specialisations : 0.0) << " us\n";
@@ -239,6 +181,11 @@ TEST(CompilerConformance, EveryFreshCaseMatchesTheOriginalAndTheInterpreter)
   }
   EXPECT_TRUE(problems.empty()) << problems.size() << " mismatches (listed above)";
   EXPECT_GT(total.points, 1000);
+  // The objects the compiler cannot turn into straight-line code (a loop whose condition
+  // depends on x): exactly these, so a compiler change that loses (or gains) one shows here.
+  const std::vector<std::string> expected_fallbacks = { "grammar/while_sum",
+    "semantics/uninitialised_variable_runtime" };
+  EXPECT_EQ(fallbacks, expected_fallbacks);
 }
 
 TEST(CompilerConformance, ExternalModelsMatchTheOriginal)

@@ -1,5 +1,10 @@
 #include "conformance_runner.h"
 
+#include "Compiler/library_call.h"
+#include "Compiler/model.h"
+#include "Eval/point_evaluator.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -35,6 +40,48 @@ public:
 
 private:
   Interpreter interpreter_;
+};
+
+class CompiledSession final : public EvaluationSession
+{
+public:
+  explicit CompiledSession(std::shared_ptr<const Model> model)
+    : model_(std::move(model))
+  {
+    set_parameters({});
+  }
+  void set_parameters(std::span<const double> a) override
+  {
+    parameters_.assign(a.begin(), a.end());
+    evaluator_.emplace(model_->tape(parameters_));
+  }
+  void reset_attributes() override {}
+  Outcome evaluate(std::span<const double> x) override
+  {
+    const Tape& tape = evaluator_->tape();
+    std::vector<double> outputs(tape.outputs.size());
+    const int error = evaluator_->evaluate(x, outputs);
+    Outcome o;
+    o.a = parameters_;
+    o.a.resize(static_cast<std::size_t>(model_->a_dim()), 0.0);
+    if (error != 0)
+    {
+      const TapeError& e = tape.errors.at(static_cast<std::size_t>(error - 1));
+      const auto aborts = compiler::library_abort_messages();
+      const bool abort = std::find(aborts.begin(), aborts.end(), e.message) != aborts.end();
+      o.error = RuntimeError{ e.message, e.location, abort };
+      return o;
+    }
+    o.value = outputs.empty() ? 0.0 : outputs[0];
+    o.s.assign(outputs.begin() + (outputs.empty() ? 0 : 1), outputs.end());
+    o.s.resize(static_cast<std::size_t>(model_->s_dim()), 0.0);
+    return o;
+  }
+
+private:
+  std::shared_ptr<const Model> model_;
+  std::vector<double> parameters_;
+  std::optional<PointEvaluator> evaluator_;
 };
 
 std::string describe(const RuntimeError& e)
@@ -116,6 +163,21 @@ std::unique_ptr<EvaluationSession> InterpreterEvaluator::start(
   std::string&) const
 {
   return std::make_unique<InterpreterSession>(std::move(program), object_index);
+}
+
+std::unique_ptr<EvaluationSession> CompiledEvaluator::start(
+  std::shared_ptr<const ast::Program> program,
+  int object_index,
+  std::string& why_not) const
+{
+  Model::CompileResult compiled = Model::compile(std::move(program), object_index);
+  if (!compiled.model)
+  {
+    why_not =
+      compiled.diagnostics.empty() ? "compilation failed" : compiled.diagnostics.front().message;
+    return nullptr;
+  }
+  return std::make_unique<CompiledSession>(std::move(compiled.model));
 }
 
 bool same_double(double expected, double actual)

@@ -36,8 +36,29 @@ struct KnownException
   const char* reason;
 };
 
+// The compiled tapes evaluate every point from a fresh state (a[] as given, s[] = 0; see
+// Documentation/compatibility.md): in the `state` category's sequence cases, which carry a[]
+// and s[] from one point to the next as hfp does, the points that depend on that differ.
+constexpr const char* kWritesA =
+  "the model writes a[]: tapes return a[] as given and start every point from it";
+constexpr const char* kConvArcWritesA =
+  "hfConvArc writes its angle back into a[]: tapes do not keep it for the next point";
+constexpr const char* kReadsSBeforeWriting =
+  "s[] is read before it is written: tapes start every point with s[] = 0";
+constexpr const char* kSBeforeError =
+  "s[] written at the failed point before the error: tapes start the next point with s[] = 0";
 const std::vector<KnownException> kKnownExceptions = {
-  // (none so far)
+  { "compiled", "state/a_modified_persists", 0, kWritesA },
+  { "compiled", "state/a_modified_persists", 1, kWritesA },
+  { "compiled", "state/a_modified_persists", 2, kWritesA },
+  { "compiled", "state/a_modified_persists", 3, kWritesA },
+  { "compiled", "state/conv_arc_angle_drift_in_a", 0, kConvArcWritesA },
+  { "compiled", "state/conv_arc_angle_drift_in_a", 1, kConvArcWritesA },
+  { "compiled", "state/conv_arc_angle_drift_in_a", 2, kConvArcWritesA },
+  { "compiled", "state/s_read_before_write_persists", 1, kReadsSBeforeWriting },
+  { "compiled", "state/s_read_before_write_persists", 2, kReadsSBeforeWriting },
+  { "compiled", "state/s_read_before_write_persists", 3, kReadsSBeforeWriting },
+  { "compiled", "state/s_written_before_error_persists", 2, kSBeforeError },
 };
 
 const std::vector<std::string> kCategories = { "lexical",
@@ -96,9 +117,14 @@ const Suite& suite()
 const CaseEvaluator& evaluator_by_name(const std::string& name)
 {
   static const InterpreterEvaluator interpreter;
+  static const CompiledEvaluator compiled;
   if (name == interpreter.name())
   {
     return interpreter;
+  }
+  if (name == compiled.name())
+  {
+    return compiled;
   }
   throw std::invalid_argument("unknown evaluator " + name);
 }
@@ -261,6 +287,11 @@ INSTANTIATE_TEST_SUITE_P(Interpreter,
   ConformanceEval,
   ::testing::Combine(::testing::Values(std::string("interpreter")),
     ::testing::ValuesIn(kCategories)),
+  [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+INSTANTIATE_TEST_SUITE_P(Compiled,
+  ConformanceEval,
+  ::testing::Combine(::testing::Values(std::string("compiled")), ::testing::ValuesIn(kCategories)),
   [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
 
 } // namespace

@@ -1,8 +1,9 @@
 // Compiled tapes (Model -> Tape -> PointEvaluator) against (1) the original's recorded results
 // in the conformance suite and (2) the reference Interpreter, on every point of every
-// fresh-mode case. Compiled tapes evaluate in fresh mode by design (model.h), so the five
-// `sequence` cases of state/ are checked against the interpreter only point by point from a
-// fresh state.
+// fresh-mode case. Compiled tapes evaluate in fresh mode by design (model.h), so here the five
+// `sequence` cases of state/ are checked against the interpreter point by point from a fresh
+// state; frep_conformance_tests (Compiled/*) compares them with the original's sequence values,
+// with the points that depend on persistence as known exceptions.
 #include "conformance_case.h"
 #include "conformance_runner.h"
 

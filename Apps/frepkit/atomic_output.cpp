@@ -2,6 +2,8 @@
 
 #include "user_error.h"
 
+#include "Media/durable_file.h"
+
 #include <cstdio>
 #include <iostream>
 #include <unistd.h>
@@ -47,9 +49,14 @@ void AtomicOutput::commit()
     return;
   }
   file_.close();
-  if (!file_ || std::rename(temporary_.c_str(), path_.c_str()) != 0)
+  if (!file_)
   {
     throw UserError(path_ + ": cannot write the output file");
+  }
+  // The data on disk before the file gets its name, the name on disk before we report success.
+  if (const std::string problem = frep::media::durable_rename(temporary_, path_); !problem.empty())
+  {
+    throw UserError(path_ + ": cannot write the output file (" + problem + ")");
   }
   committed_ = true;
 }

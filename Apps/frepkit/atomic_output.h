@@ -1,5 +1,6 @@
 // Output that never leaves a half-written file: written under a temporary name next to the
-// target and renamed over it when complete. "-" means standard output.
+// target and, when complete, synced and renamed over it (frep::media::durable_rename: the data
+// and the new name reach the disk before commit() returns). "-" means standard output.
 #pragma once
 
 #include <fstream>
@@ -20,7 +21,8 @@ public:
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
   std::ostream& stream();
-  /// Flushes, closes and renames the temporary file to the target. Throws UserError on failure.
+  /// Flushes, closes, syncs and renames the temporary file to the target, then syncs the
+  /// directory. Throws UserError on failure.
   void commit();
 
 private:

@@ -1,5 +1,6 @@
 #include "Media/movie_encoder.h"
 
+#include "Media/durable_file.h"
 #include "Media/program_runner.h"
 #include "Media/wav_writer.h"
 
@@ -209,12 +210,10 @@ MovieResult encode_movie(const MovieInput& input,
       run.error.empty() ? "ffmpeg exited with status " + std::to_string(run.exit_code) : run.error;
     return { where + failure + (message.empty() ? "" : ": " + message) };
   }
-  std::filesystem::rename(partial, output, filesystem_error);
-  if (filesystem_error)
+  if (std::string problem = durable_rename(partial, output); !problem.empty())
   {
-    const std::string message = filesystem_error.message();
     std::filesystem::remove(partial, filesystem_error);
-    return { where + "cannot rename " + partial.string() + ": " + message };
+    return { where + problem };
   }
   return {};
 }

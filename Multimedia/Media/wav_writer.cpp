@@ -1,5 +1,7 @@
 #include "Media/wav_writer.h"
 
+#include "Media/durable_file.h"
+
 #include <sndfile.h>
 
 #include <cerrno>
@@ -53,12 +55,12 @@ public:
     fd_ = -1;
     return status == 0 ? 0 : errno;
   }
-  int rename_to(const std::string& target)
+  /// durable_rename: the data and the new name on disk. Empty on success.
+  std::string rename_to(const std::string& target)
   {
-    if (::rename(path_.c_str(), target.c_str()) != 0)
-      return errno;
-    renamed_ = true;
-    return 0;
+    std::string problem = durable_rename(path_, target);
+    renamed_ = problem.empty();
+    return problem;
   }
 
 private:
@@ -130,12 +132,10 @@ WavWriteResult write_wav(const std::filesystem::path& path,
   if (!write_error.empty())
     return { where + write_error };
 
-  if (::fsync(temporary.fd()) != 0)
-    return { where + "fsync: " + system_message(errno) };
   if (const int status = temporary.close(); status != 0)
     return { where + "close: " + system_message(status) };
-  if (const int status = temporary.rename_to(path.string()); status != 0)
-    return { where + "rename from " + temporary.path() + ": " + system_message(status) };
+  if (std::string problem = temporary.rename_to(path.string()); !problem.empty())
+    return { where + problem };
   return {};
 }
 

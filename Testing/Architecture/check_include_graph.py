@@ -190,7 +190,10 @@ def list_files(root):
         top = subprocess.run(["git", "-C", root, "rev-parse", "--show-toplevel"],
                              capture_output=True, text=True, check=True).stdout.strip()
         if os.path.realpath(top) == os.path.realpath(root):
-            out = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached"],
+            # Tracked files and new ones git does not ignore: a file is checked from the moment
+            # it exists, not from its first commit; build trees and the like are ignored.
+            out = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others",
+                                  "--exclude-standard"],
                                  capture_output=True, check=True).stdout
             names = [name for name in out.decode("utf-8", "replace").split("\0") if name]
             # Files deleted in the work tree but not yet committed are gone.

@@ -135,8 +135,17 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   connect(editor_->document(), &QTextDocument::modificationChanged, this,
     [this] { updateTitle(); });
   connect(&parse_timer_, &QTimer::timeout, this, &StudioMainWindow::startAnalysis);
-  connect(&refine_timer_, &QTimer::timeout, this,
-    [this] { requestSection({ kRefinedResolution }); });
+  connect(&refine_timer_, &QTimer::timeout, this, [this] {
+    // The values have rested, but the coarse section of these values may still be meshing (a
+    // loaded machine): a new request would cancel it and leave the view empty for longer. Let it
+    // finish, then refine.
+    if (worker_->busy())
+    {
+      refine_timer_.start();
+      return;
+    }
+    requestSection({ kRefinedResolution });
+  });
   connect(errors_, &ErrorListWidget::locationActivated, editor_, &HyperFunEditor::goToLocation);
   connect(panel_, &CoordinatePanel::valuesChanged, this, &StudioMainWindow::onValuesChanged);
   connect(panel_, &CoordinatePanel::objectChanged, this, [this] {

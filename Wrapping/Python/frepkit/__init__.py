@@ -31,7 +31,8 @@ from .FRepKitIO import *  # noqa: F401,F403,E402
 from .FRepKitMapping import *  # noqa: F401,F403,E402
 from .FRepKitSources import vtkFRepEvaluator, vtkHyperFunSource  # noqa: E402
 
-__all__ = [name for name in dir() if name.startswith("vtk")] + [
+__all__ = [name for name, value in list(globals().items())
+           if name.startswith("vtk") and isinstance(value, type)] + [
     "FRepError", "ErrorObserver", "load", "evaluate", "update"]
 
 

@@ -168,9 +168,10 @@ public:
   ///@{
   /**
    * Threads that evaluate (the participants of the engine's thread pool, the calling thread
-   * included); default 0 = std::thread::hardware_concurrency(), 1 = the calling thread only.
+   * included); default 0 = std::thread::hardware_concurrency(), 1 = the calling thread only;
+   * at most 1024 (as vtkFRepPolygonizer, vtkMultimediaMapper and frepkit --threads).
    */
-  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 

@@ -5,9 +5,11 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -74,6 +76,28 @@ int vtkHyperFunReader::RequestDataObject(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
+vtkTypeBool vtkHyperFunReader::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_NOT_GENERATED()))
+  {
+    // A request for the object (port 0) in a parallel run, whose consumers of port 1 ask for
+    // their own piece of the mesh (piece r of N on rank r): meshing it now would mesh the whole
+    // of it on every rank, then the piece.
+    const bool objectOnly = request->Has(vtkExecutive::FROM_OUTPUT_PORT()) &&
+      request->Get(vtkExecutive::FROM_OUTPUT_PORT()) == 0;
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+    if (objectOnly && parallel)
+    {
+      outInfo->GetInformationObject(1)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
+    }
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+}
+
+//------------------------------------------------------------------------------
 int vtkHyperFunReader::RequestInformation(vtkInformation* request,
   vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
@@ -118,6 +142,10 @@ int vtkHyperFunReader::RequestData(vtkInformation* request,
     return 0;
   }
   vtkInformation* geometryInfo = outInfo->GetInformationObject(1);
+  if (geometryInfo->Get(vtkDemandDrivenPipeline::DATA_NOT_GENERATED()))
+  {
+    return 1; // port 1 is left as it is (ProcessRequest)
+  }
   vtkPolyData* geometry = vtkPolyData::GetData(geometryInfo);
   vtkFRepObject* object = vtkFRepObject::GetData(outInfo, 0);
   if (!geometry)

@@ -23,6 +23,16 @@
  * every piece (CAN_HANDLE_PIECE_REQUEST on both ports). With GenerateGeometry off, port 1 stays
  * empty and nothing is meshed.
  *
+ * DISTRIBUTED RUNS: in a parallel run (the global vtkMultiProcessController has more than one
+ * process, as in pvbatch/pvserver under mpiexec) an update of port 0 alone (Update(), Update(0),
+ * or a filter on the object asking for the whole object, as every FRep filter does) does not
+ * mesh port 1: port 1 is left as it was and marked not generated (DATA_NOT_GENERATED), so the
+ * requests of its consumers (piece r of N on rank r) execute the reader again and mesh only
+ * their piece. Without this every rank meshed the whole default mesh once, then its piece. In
+ * one process nothing changes: an update of port 0 meshes port 1 for port 1's own piece request
+ * (reader->Update(); reader->GetOutput(1) works); in a parallel program update port 1 itself
+ * (Update(1), or a consumer's UpdatePiece).
+ *
  * GetObjectNames() lists the objects the program defines, after RequestInformation (the
  * program vtkHyperFunSource parses there, once): the object the reader evaluates when
  * ObjectName is empty (my_model, else the first) comes first, then the others in the order of
@@ -91,6 +101,11 @@ protected:
   ~vtkHyperFunReader() override;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  /**
+   * Adds the REQUEST_DATA_NOT_GENERATED pass: see DISTRIBUTED RUNS in the class description.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

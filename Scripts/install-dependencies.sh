@@ -18,6 +18,9 @@ packages=(
   fonts-dejavu-core
   # mpiexec for the ParaView plug-in's distributed test (mpiexec -n 2 pvbatch)
   openmpi-bin
+  # the Python wrapping (cmake/FRepKitPython.cmake): Python's headers for VTK's wrapped modules,
+  # numpy for vtkmodules.util.numpy_support and the Python tests
+  python3-dev python3-numpy
   # toolchain, engine, command line, tests and benchmarks
   build-essential cmake pkg-config git
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev

@@ -21,7 +21,10 @@ vtk_module_build(
   VERSION             ${PROJECT_VERSION}
   SOVERSION           ${PROJECT_VERSION_MAJOR}
   INSTALL_HEADERS     OFF
-  ENABLE_WRAPPING     OFF
+  # Wrapping on: vtk_module_build writes each module's wrap hierarchy (which ParaView's
+  # client-server wrapping of the plug-in and the Python wrapping, cmake/FRepKitPython.cmake,
+  # read). What cannot be wrapped (engine types) is hidden with VTK_WRAPEXCLUDE / __VTK_WRAP__.
+  ENABLE_WRAPPING     ON
   TEST_DIRECTORY_NAME Testing
   # Relative destinations (ParaView's configuration leaves absolute install dirs behind);
   # they also put the libraries in build/lib and the test drivers in build/bin.

@@ -18,6 +18,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkTrivialConsumer.h"
 
 #include <cmath>
 #include <string>
@@ -136,6 +137,37 @@ int TestHyperFunReader(int, char*[])
   reader->GetOutputInformation(1)->Set(
     vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
   reader->GetOutputInformation(1)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+
+  // One process (DISTRIBUTED RUNS): with a consumer on port 1, an update of port 0 still meshes
+  // port 1 (and the request of port 1's own consumer, piece 1 of 2, then meshes that piece
+  // only). The parallel case, where a port-0 update leaves port 1 alone, is
+  // checked by the plug-in's MPI test (ctest -R ParaViewPlugin-MPI).
+  {
+    vtkNew<vtkHyperFunReader> lazy;
+    lazy->SetGeometryResolution(41);
+    lazy->SetModelText(Program);
+    lazy->SetCoordinateRange(3, 0.0, 2.0);
+    lazy->SetDefaultCoordinateRange(-4.0, 4.0);
+    vtkNew<vtkTrivialConsumer> consumer;
+    consumer->SetInputConnection(lazy->GetOutputPort(1));
+    lazy->Update(0);
+    FREPKIT_CHECK(failures, lazy->GetOutput()->HasModel());
+    FREPKIT_CHECK(failures, lazy->GetGeometryOutput()->GetNumberOfPolys() == whole);
+    auto requestPiece = [&](int piece)
+    {
+      vtkInformation* info = lazy->GetOutputInformation(1);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 2);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+      lazy->Update(1);
+    };
+    requestPiece(1);
+    const vtkIdType half = lazy->GetGeometryOutput()->GetNumberOfPolys();
+    FREPKIT_CHECK(failures, half > 0 && half < whole);
+    requestPiece(0);
+    const vtkIdType other = lazy->GetGeometryOutput()->GetNumberOfPolys();
+    FREPKIT_CHECK(failures, other > 0 && other + half == whole);
+  }
 
   // A 2-D object: a contour (lines); GenerateGeometry off: an empty port 1.
   reader->SetModelText("disc(x[2], a[1]) { disc = 4 - x[1]^2 - x[2]^2; }");

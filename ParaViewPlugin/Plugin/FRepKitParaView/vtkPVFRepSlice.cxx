@@ -6,7 +6,9 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -118,6 +120,7 @@ int vtkPVFRepSlice::RequestInformation(
   {
     range[0] = range[1] = 0.0;
   }
+  std::fill(std::begin(this->Sliders), std::end(this->Sliders), 0);
   vtkFRepInformation::Metadata input;
   if (!vtkFRepInformation::Get(inputVector[0]->GetInformationObject(0), input))
   {
@@ -127,6 +130,13 @@ int vtkPVFRepSlice::RequestInformation(
   {
     this->Ranges[i][0] = input.Ranges[i][0];
     this->Ranges[i][1] = input.Ranges[i][1];
+  }
+  for (int c : input.FreeCoordinates)
+  {
+    if (c >= 0 && c < NumberOfValues)
+    {
+      this->Sliders[c] = 1;
+    }
   }
   return this->WithAutomaticValues(input,
     [&] { return this->Superclass::RequestInformation(request, inputVector, outputVector); });
@@ -168,7 +178,7 @@ void vtkPVFRepSlice::PrintSelf(ostream& os, vtkIndent indent)
   for (int i = 0; i < NumberOfValues; ++i)
   {
     os << indent << "X" << i + 1 << ": " << this->GetValue(i) << " (range " << this->Ranges[i][0]
-       << ", " << this->Ranges[i][1] << ")\n";
+       << ", " << this->Ranges[i][1] << (this->Sliders[i] ? ", slider" : ", no slider") << ")\n";
   }
   os << indent << "OutputDimension: " << this->OutputDimension << "\n";
 }

@@ -20,7 +20,8 @@
  *
  * For the sliders' ranges, RequestInformation reads the input's vtkFRepInformation keys (nothing
  * upstream is executed) and GetXiRange() then gives the interval of model coordinate xi ([0, 0]
- * for a coordinate the input does not have); the output's keys are those of the cross-section
+ * for a coordinate the input does not have), GetCoordinateSliders() which of X1..X8 act on the
+ * input (ParaView shows only those sliders); the output's keys are those of the cross-section
  * RequestData will make. Errors are vtkFRepSlice's: one message listing every
  * problem (e.g. an unknown name in FreeCoordinateOrder) and an empty output.
  *
@@ -94,6 +95,14 @@ public:
   double* GetX8Range() VTK_SIZEHINT(2) { return this->Ranges[7]; }
   ///@}
 
+  /**
+   * Which sliders X1..X8 act on the input, after RequestInformation: element i is 1 when the
+   * input's model has coordinate x(i+1) and it is free in the input (so fixing it means
+   * something), else 0 (no such coordinate, fixed upstream, or no input). ParaView shows the
+   * slider Xi only where this is 1.
+   */
+  int* GetCoordinateSliders() VTK_SIZEHINT(8) { return this->Sliders; }
+
 protected:
   /**
    * Defaults: X1..X8 0, OutputDimension 3, no FreeCoordinateOrder.
@@ -114,6 +123,7 @@ protected:
   double X8 = 0.0;
   int OutputDimension = 3;
   double Ranges[NumberOfValues][2] = {};
+  int Sliders[NumberOfValues] = {};
 
 private:
   vtkPVFRepSlice(const vtkPVFRepSlice&) = delete;

@@ -25,6 +25,21 @@ LoadPlugin(plugin, remote=False, ns=globals())
 reader = HyperFunReader(FileName=os.path.join(source_dir, "Examples", "homotopy5d.hf"))
 reader.CoordinateRanges = [-4, 4, -4, 4, -4, 4, 0, 1, 0, 1]
 reader.GeometryResolution = 48
+# The reader's executions on rank 0 (where the script runs): the triangles of port 1 after each
+# one that generated port 1, None after one that left it alone (DATA_NOT_GENERATED, still set
+# when the algorithm's EndEvent fires).
+from vtkmodules.vtkCommonExecutionModel import vtkDemandDrivenPipeline  # noqa: E402
+
+reader_runs = []
+vtk_reader = reader.GetClientSideObject()
+
+
+def _reader_ran(caller, event):
+    skipped = caller.GetOutputInformation(1).Get(vtkDemandDrivenPipeline.DATA_NOT_GENERATED())
+    reader_runs.append(None if skipped else caller.GetOutputDataObject(1).GetNumberOfCells())
+
+
+vtk_reader.AddObserver("EndEvent", _reader_ran)
 fslice = FRepSlice(Input=reader)
 fslice.X4 = 0.5
 fslice.X5 = 0.5
@@ -74,6 +89,7 @@ result = {
     "polygonizer": pieces(poly),
     "default_mesh": pieces(reader, 1),
 }
+result["reader_runs"] = reader_runs
 sampler.UpdatePipeline()
 sinfo = sampler.GetDataInformation()
 f = sampler.PointData["F"].GetRange()

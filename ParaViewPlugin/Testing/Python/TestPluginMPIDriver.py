@@ -1,7 +1,9 @@
 """Runs TestPluginMPI.py with pvbatch on 1 rank and with mpiexec -n N pvbatch (N = 2 unless
 given) and checks: the same total triangle count, point count and bounds as one process; every
 rank made a non-empty piece smaller than the whole (each computed only its piece, a slab along
-z: the ranks' z ranges follow each other); the same sampled image (extent and values). Run with any Python:
+z: the ranks' z ranges follow each other), for the polygoniser and for the reader's default mesh
+(port 1), and rank 0's reader meshed port 1 only once, for its piece; the same sampled image
+(extent and values). Run with any Python:
   python3 TestPluginMPIDriver.py PLUGIN SOURCE_DIR [N]"""
 
 import json
@@ -58,13 +60,29 @@ if one and many:
     for lower, upper in zip(slabs, slabs[1:]):
         t.check(lower[2] <= upper[1] + 1e-6, "slabs along z in rank order: %s" % slabs)
     t.check(sum(s[0] for s in slabs) == a["cells"], "the pieces add up")
-    # The reader's default mesh (port 1): the same shape; KNOWN LIMITATION (see
-    # Documentation/paraview-plugin.md): in pvbatch its piece request arrives after a whole-object
-    # request on port 0 and each rank keeps the whole mesh, so only the bounds are compared here.
+    # The reader's default mesh (port 1) splits like the polygoniser: each rank meshes only its
+    # slab (the pieces add up to the one-process mesh), and rank 0 meshed once: the first,
+    # whole-object request on port 0 (from FRep Slice) does not mesh port 1 in a parallel run.
     a, b = one["default_mesh"], many["default_mesh"]
     t.check(a["cells"] > 1000, "default mesh: %d triangles" % a["cells"])
+    t.check(a["cells"] == b["cells"], "default mesh: %d triangles on 1 rank, %d on %d"
+            % (a["cells"], b["cells"], ranks))
     for k in range(6):
         t.near(b["bounds"][k], a["bounds"][k], 1e-5, "default mesh bounds[%d]" % k)
+    t.check(len(b["ranks"]) == ranks, "default mesh: every rank made a piece: %s" % b["ranks"])
+    for r, (cells, zlo, zhi) in b["ranks"].items():
+        t.check(0 < cells < a["cells"], "default mesh: rank %s has %d of %d triangles"
+                % (r, cells, a["cells"]))
+    mesh_slabs = [b["ranks"][str(r)] for r in range(ranks) if str(r) in b["ranks"]]
+    for lower, upper in zip(mesh_slabs, mesh_slabs[1:]):
+        t.check(lower[2] <= upper[1] + 1e-6, "default mesh slabs along z: %s" % mesh_slabs)
+    t.check(sum(s[0] for s in mesh_slabs) == a["cells"], "default mesh: the pieces add up")
+    meshed = [c for c in many["reader_runs"] if c is not None]
+    t.check(meshed == [b["ranks"]["0"][0]],
+            "rank 0 meshed port 1 once, only its piece: triangles per reader run %s "
+            "(None: port 1 not generated), 1 rank: %s" % (many["reader_runs"], one["reader_runs"]))
+    t.check([c for c in one["reader_runs"] if c is not None] == [a["cells"]],
+            "1 rank: the whole default mesh once: %s" % one["reader_runs"])
     print("default mesh: %d triangles on 1 rank; on %d ranks per rank: %s"
           % (a["cells"], ranks, {r: v[0] for r, v in b["ranks"].items()}))
     # The sampler: every rank samples its extent; the same whole extent and values. (Point

@@ -10,6 +10,13 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from frepkit_test_support import Checker, arguments  # noqa: E402
 
+# The Python package frepkit (PYTHONPATH, when the build wraps the modules): imported before any
+# proxy exists, it gives the plug-in's VTK objects (GetClientSideObject) their full Python API.
+try:
+    import frepkit  # noqa: E402,F401
+except ImportError:
+    frepkit = None
+
 from paraview.simple import *  # noqa: E402,F401,F403
 from paraview import servermanager  # noqa: E402
 
@@ -84,6 +91,55 @@ t.near(fslice.X4, 0.5, 1e-12, "X4 starts at the midpoint")
 fslice.UpdatePipeline()
 t.check(field_range(fslice, "FRepDimension") == (3.0, 3.0), "slice dimension 3")
 t.check(field_range(fslice, "FRepFixedValues") == (0.5, 0.5), "x4 fixed at 0.5")
+
+
+def shown_sliders(proxy):
+    """The sliders X1..X8 the Properties panel shows: each Xi's GenericDecorator (mode
+    visibility) evaluated as ParaView's pqGenericPropertyWidgetDecorator does, on the
+    information property it names."""
+    proxy.UpdatePipelineInformation()
+    shown = []
+    for i in range(1, 9):
+        hints = proxy.GetProperty("X%d" % i).SMProperty.GetHints()
+        decorator = hints.FindNestedElementByName("PropertyWidgetDecorator") if hints else None
+        if decorator is None or decorator.GetAttribute("type") != "GenericDecorator" or \
+                decorator.GetAttribute("mode") != "visibility":
+            shown.append(i)  # no decorator: always shown
+            continue
+        values = list(proxy.GetProperty(decorator.GetAttribute("property")))
+        index = int(decorator.GetAttribute("index") or 0)
+        if index < len(values) and str(int(values[index])) == decorator.GetAttribute("value"):
+            shown.append(i)
+    return shown
+
+
+# Sliders only for the input's own free coordinates (not always X1..X8).
+t.check(list(fslice.GetProperty("CoordinateSliders")) == [1, 1, 1, 1, 0, 0, 0, 0],
+        "CoordinateSliders of a 4-D model: %s" % list(fslice.GetProperty("CoordinateSliders")))
+t.check(shown_sliders(fslice) == [1, 2, 3, 4], "4-D model: sliders X1..X4 only: %s"
+        % shown_sliders(fslice))
+meta = HyperFunReader(FileName=os.path.join(examples, "homotopy5d.hf"), GenerateGeometry=0)
+meta_slice = FRepSlice(Input=meta)
+t.check(shown_sliders(meta_slice) == [1, 2, 3, 4, 5], "5-D model: X1..X5: %s"
+        % shown_sliders(meta_slice))
+# x5 fixed upstream: its slider would do nothing, so it is hidden downstream.
+meta_slice.FreeCoordinates = "x1,x2,x3,x4"
+second = FRepSlice(Input=meta_slice)
+t.check(shown_sliders(second) == [1, 2, 3, 4], "x5 fixed upstream: X1..X4: %s"
+        % shown_sliders(second))
+meta_slice.FreeCoordinates = ""
+wide = HyperFunSource(ModelText="my_model(x[10], a[1]) { my_model = 1 - x[1]^2 - x[10]^2; }",
+                      GenerateGeometry=0)
+wide_slice = FRepSlice(Input=wide)
+t.check(shown_sliders(wide_slice) == list(range(1, 9)), "10-D model: all 8: %s"
+        % shown_sliders(wide_slice))
+ball3 = HyperFunSource(ModelText="my_model(x[3], a[1]) { my_model = 1 - x[1]^2; }",
+                       GenerateGeometry=0)
+ball3_slice = FRepSlice(Input=ball3)
+t.check(shown_sliders(ball3_slice) == [1, 2, 3], "3-D model: X1..X3: %s"
+        % shown_sliders(ball3_slice))
+for p in (ball3_slice, ball3, wide_slice, wide, second, meta_slice, meta):
+    Delete(p)
 
 poly = FRepPolygonizer(Input=fslice)
 t.check(list(poly.SampleDimensions) == [64, 64, 64] and poly.CapBoundary == 1 and
@@ -311,6 +367,69 @@ t.check(cut.PointData["RTData"] is not None, "the wavelet's values on the surfac
 cut.Shape.ExtraCoordinates = [1.0, 0, 0, 0, 0]
 cut.UpdatePipeline()
 t.near(bounds(cut)[5], 0.6, 0.15, "x4 = 1: the ring's surface (0.6 thick, on a unit grid)")
+
+# --- The XML domains equal the C++ limits ----------------------------------------------------
+# Every range domain with static min/max of an FRepKit proxy against the C++ clamp of its
+# setter (vtkSetClampMacro): through the VTK object's Get<Name>Min/MaxValue when the package
+# frepkit gives Python the class, else read from the class's header.
+import re  # noqa: E402
+import xml.etree.ElementTree as ET  # noqa: E402
+
+headers = {}
+for folder in ("Sources", "Filters", "IO", "Mapping",
+               os.path.join("ParaViewPlugin", "Plugin", "FRepKitParaView")):
+    for name in os.listdir(os.path.join(source_dir, folder)):
+        if name.endswith(".h"):
+            with open(os.path.join(source_dir, folder, name)) as stream:
+                headers[name[:-2]] = stream.read()
+
+
+def header_clamp(cls, name):
+    """(lo, hi) of vtkSetClampMacro(name, ...) in cls or its FRepKit superclasses."""
+    while cls in headers:
+        text = headers[cls]
+        m = re.search(r"vtkSetClampMacro\(\s*%s\s*,\s*[\w ]+,\s*([^,]+),\s*([^)]+)\)" % name, text)
+        if m:
+            return m.group(1).strip(), m.group(2).strip()
+        sup = re.search(r"vtkTypeMacro\(\s*%s\s*,\s*(\w+)\s*\)" % cls, text)
+        cls = sup.group(1) if sup else None
+    return None
+
+
+compared = 0
+for xml_name in ("FRepKitSources.xml", "FRepKitFilters.xml", "FRepKitMapping.xml"):
+    root = ET.parse(os.path.join(source_dir, "ParaViewPlugin", "Plugin", xml_name)).getroot()
+    for proxy in root.iter("SourceProxy"):
+        cls = proxy.get("class")
+        for prop in proxy:
+            command = prop.get("command") or ""
+            for domain in prop:
+                if domain.tag not in ("IntRangeDomain", "DoubleRangeDomain") or \
+                        domain.get("max") is None or not command.startswith("Set"):
+                    continue
+                name = command[3:]
+                xml_lo = [float(v) for v in domain.get("min", "").split()]
+                xml_hi = [float(v) for v in domain.get("max").split()]
+                clamp = None
+                if frepkit is not None:
+                    obj = getattr(frepkit, cls, None)
+                    obj = obj() if obj is not None else None
+                    if obj is not None and hasattr(obj, "Get%sMaxValue" % name):
+                        clamp = (getattr(obj, "Get%sMinValue" % name)(),
+                                 getattr(obj, "Get%sMaxValue" % name)())
+                if clamp is None:
+                    text = header_clamp(cls, name)
+                    if text and all(re.fullmatch(r"-?[0-9.]+", v) for v in text):
+                        clamp = tuple(float(v) for v in text)
+                if clamp is None:
+                    continue  # no clamp in C++ (e.g. SampleDimensions: the engine's grid limit)
+                compared += 1
+                t.check(set(xml_lo) == {float(clamp[0])} and set(xml_hi) == {float(clamp[1])},
+                        "%s.%s: XML domain [%s, %s], C++ clamp [%s, %s]" % (
+                            proxy.get("name"), prop.get("name"), domain.get("min"),
+                            domain.get("max"), clamp[0], clamp[1]))
+t.check(compared >= 10, "%d XML domains compared with their C++ clamps (frepkit %s)"
+        % (compared, "imported" if frepkit else "not available: from the headers"))
 
 # Exit only on failure: sys.exit() in pvpython with a render window open ends in an X error
 # (GLXBadContext) and status 1 even after a success; the normal end finalises cleanly.

@@ -20,7 +20,10 @@ vtk_module_build(
   PACKAGE             FRepKit
   VERSION             ${PROJECT_VERSION}
   SOVERSION           ${PROJECT_VERSION_MAJOR}
-  INSTALL_HEADERS     OFF
+  # Installed: libraries, headers (the modules' classes), the export set shared with the plain
+  # libraries (FRepKit-targets.cmake) and the module properties (cmake/FRepKitInstall.cmake).
+  INSTALL_HEADERS     ON
+  INSTALL_EXPORT      FRepKitTargets
   ENABLE_WRAPPING     OFF
   TEST_DIRECTORY_NAME Testing
   # Relative destinations (ParaView's configuration leaves absolute install dirs behind);

@@ -1,5 +1,6 @@
 # What `cmake --install build --prefix P` installs, and the Debian package (`cpack -G DEB`):
 #   P/bin/frepkit, P/bin/FRepStudio            RUNPATH $ORIGIN/../lib
+#   P/bin/paraview.conf                        the plugins XMLs the ParaView GUI in P/bin reads
 #   P/lib/libFRepKit<Name>.so.<version>        the plain libraries and the VTK modules
 #   P/lib/libfrepkit_png.so                    frepkit's dlopened PNG encoder (<bin>/../lib)
 #   P/lib/paraview-5.11/plugins/FRepKit/       the ParaView plug-in, frepkit.plugins.xml beside it
@@ -11,7 +12,7 @@
 #   P/share/applications, share/icons          FRepStudio's desktop entry and icon
 # Installed programs find their data relative to themselves (<bin>/../share/frepkit/examples,
 # <bin>/../lib/libfrepkit_png.so); nothing installed names the build or source tree (checked by
-# ctest -R Install.Consumer).
+# ctest -R Install.Prefix).
 include(CMakePackageConfigHelpers)
 
 set(FREPKIT_INSTALL_CMAKE_DIR lib/cmake/frepkit)
@@ -24,22 +25,6 @@ if(FREPKIT_ENABLE_VTK)
   set(FREPKIT_PARAVIEW_PLUGIN_LINK_DIR
     "lib/${CMAKE_LIBRARY_ARCHITECTURE}/paraview-${ParaView_VERSION_MAJOR}.${ParaView_VERSION_MINOR}/plugins")
 endif()
-
-# __FILE__ (VTK's error macros, assertions) names files relative to the tree in everything that
-# is installed or linked into it, so installed binaries carry no path of the build machine.
-get_property(_frepkit_plain GLOBAL PROPERTY FREPKIT_PLAIN_LIBRARIES)
-foreach(_target IN LISTS _frepkit_plain FREPKIT_VTK_MODULES ITEMS
-    FRepKit::ParaView FRepKit frepkit frepkit_png frepkit_mesh_writers frepkit_section_writers
-    FRepStudio FRepStudioCore)
-  if(TARGET ${_target})
-    get_target_property(_real ${_target} ALIASED_TARGET)
-    if(NOT _real)
-      set(_real ${_target})
-    endif()
-    target_compile_options(${_real} PRIVATE "-fmacro-prefix-map=${PROJECT_SOURCE_DIR}/="
-      "-fmacro-prefix-map=${PROJECT_BINARY_DIR}/=")
-  endif()
-endforeach()
 
 # --- Programs ----------------------------------------------------------------------------------
 install(TARGETS frepkit RUNTIME DESTINATION bin)

@@ -18,12 +18,13 @@ vtk_module_scan(
 vtk_module_build(
   MODULES             ${FREPKIT_VTK_MODULES}
   PACKAGE             FRepKit
+  # Installed (cmake/FRepKitInstall.cmake): the libraries, the modules' class headers
+  # (INSTALL_HEADERS below), the export set shared with the plain libraries
+  # (FRepKit-targets.cmake) and the module properties.
+  INSTALL_EXPORT      FRepKitTargets
   VERSION             ${PROJECT_VERSION}
   SOVERSION           ${PROJECT_VERSION_MAJOR}
-  # Installed: libraries, headers (the modules' classes), the export set shared with the plain
-  # libraries (FRepKit-targets.cmake) and the module properties (cmake/FRepKitInstall.cmake).
   INSTALL_HEADERS     ON
-  INSTALL_EXPORT      FRepKitTargets
   ENABLE_WRAPPING     OFF
   TEST_DIRECTORY_NAME Testing
   # Relative destinations (ParaView's configuration leaves absolute install dirs behind);

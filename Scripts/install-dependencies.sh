@@ -23,6 +23,9 @@ packages=(
   python3-dev python3-numpy
   # toolchain, engine, command line, tests and benchmarks
   build-essential cmake pkg-config git
+  # the Debian package (cpack -G DEB): dpkg-shlibdeps/dpkg-deb, and file, which CPack uses to
+  # find the binaries whose libraries become the package's Depends
+  dpkg-dev file
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
 )
 

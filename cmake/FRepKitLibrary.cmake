@@ -39,6 +39,14 @@ function(frepkit_add_library name)
   if(arg_PUBLIC_HEADERS)
     frepkit_add_public_headers(${target} ${arg_PUBLIC_HEADERS})
   endif()
+  # Installed with the public headers only (the file set), into the one export set of the package
+  # (cmake/FRepKitInstall.cmake); the VTK modules join the same set through vtk_module_build.
+  install(TARGETS ${target} EXPORT FRepKitTargets
+    LIBRARY DESTINATION lib
+    ARCHIVE DESTINATION lib
+    RUNTIME DESTINATION bin
+    FILE_SET HEADERS DESTINATION include/frepkit)
+  set_property(GLOBAL APPEND PROPERTY FREPKIT_PLAIN_LIBRARIES ${target})
 endfunction()
 
 # frepkit_add_public_headers(<target> headers...): headers (relative to the current folder) that

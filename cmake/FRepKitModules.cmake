@@ -18,9 +18,13 @@ vtk_module_scan(
 vtk_module_build(
   MODULES             ${FREPKIT_VTK_MODULES}
   PACKAGE             FRepKit
+  # Installed (cmake/FRepKitInstall.cmake): the libraries, the modules' class headers
+  # (INSTALL_HEADERS below), the export set shared with the plain libraries
+  # (FRepKit-targets.cmake) and the module properties.
+  INSTALL_EXPORT      FRepKitTargets
   VERSION             ${PROJECT_VERSION}
   SOVERSION           ${PROJECT_VERSION_MAJOR}
-  INSTALL_HEADERS     OFF
+  INSTALL_HEADERS     ON
   # Wrapping on: vtk_module_build writes each module's wrap hierarchy (which ParaView's
   # client-server wrapping of the plug-in and the Python wrapping, cmake/FRepKitPython.cmake,
   # read). What cannot be wrapped (engine types) is hidden with VTK_WRAPEXCLUDE / __VTK_WRAP__.

@@ -38,12 +38,7 @@ AnimationExport::~AnimationExport()
 
 QString AnimationExport::frepkitProgram()
 {
-#ifdef FREPSTUDIO_FREPKIT
-  if (QFileInfo(QStringLiteral(FREPSTUDIO_FREPKIT)).isExecutable())
-  {
-    return QStringLiteral(FREPSTUDIO_FREPKIT);
-  }
-#endif
+  // The frepkit beside FRepStudio (<prefix>/bin, or build/bin in the build tree), else PATH.
   const QString sibling = QCoreApplication::applicationDirPath() + "/frepkit";
   if (QFileInfo(sibling).isExecutable())
   {

@@ -1,5 +1,7 @@
 #include "MappingEditor.h"
 
+#include "ExamplesDirectory.h"
+
 #include <QComboBox>
 #include <QFile>
 #include <QFileDialog>
@@ -69,7 +71,7 @@ MappingEditor::MappingEditor(QWidget* parent)
 
   connect(open, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open mapping"),
-      QStringLiteral(FREPSTUDIO_EXAMPLES_DIR), tr("Mapping (*.json)"));
+      examplesDirectory(), tr("Mapping (*.json)"));
     if (!path.isEmpty())
       loadFile(path);
   });

@@ -3,6 +3,7 @@
 #include "AnimationExport.h"
 
 #include "CoordinatePanel.h"
+#include "ExamplesDirectory.h"
 #include "ErrorListWidget.h"
 #include "MappingEditor.h"
 #include "PathPanel.h"
@@ -42,7 +43,7 @@ const char* const kRecentKey = "recentFiles";
 
 QList<QPair<QString, QString>> StudioMainWindow::examples()
 {
-  const QString root = QStringLiteral(FREPSTUDIO_EXAMPLES_DIR);
+  const QString root = examplesDirectory();
   return {
     { "Cat", root + "/homotopic/cat.hf" },
     { "Robot", root + "/homotopic/robot.hf" },
@@ -505,7 +506,7 @@ void StudioMainWindow::openFile()
   if (!maybeSave())
     return;
   const QString path = QFileDialog::getOpenFileName(this, tr("Open model"),
-    file_.isEmpty() ? QStringLiteral(FREPSTUDIO_EXAMPLES_DIR) : QFileInfo(file_).path(),
+    file_.isEmpty() ? examplesDirectory() : QFileInfo(file_).path(),
     tr("HyperFun (*.hf);;All files (*)"));
   if (!path.isEmpty())
     loadFile(path);

@@ -25,8 +25,9 @@ namespace frepkit
 namespace
 {
 
-// The Examples folder: the source tree the tool was built from, else <prefix>/share/frepkit
-// next to an installed tool.
+// The Examples folder: <bin>/../share/frepkit/examples beside the running tool, in an
+// installation (<prefix>/bin/frepkit) and in the build tree alike (build/share/frepkit/examples
+// is a link to the source tree's Examples/); no path of the build machine is compiled in.
 fs::path find_examples(const std::string& requested)
 {
   if (!requested.empty())
@@ -34,16 +35,13 @@ fs::path find_examples(const std::string& requested)
     return requested;
   }
   std::vector<fs::path> candidates;
-#ifdef FREPKIT_EXAMPLES_DIR
-  candidates.emplace_back(FREPKIT_EXAMPLES_DIR);
-#endif
   char executable[PATH_MAX];
   const ssize_t length = ::readlink("/proc/self/exe", executable, sizeof executable - 1);
   if (length > 0)
   {
     const fs::path bin =
       fs::path(std::string(executable, static_cast<std::size_t>(length))).parent_path();
-    candidates.push_back(bin / ".." / "share" / "frepkit" / "Examples");
+    candidates.push_back(bin.parent_path() / "share" / "frepkit" / "examples");
   }
   for (const fs::path& c : candidates)
   {

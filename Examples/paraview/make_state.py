@@ -27,4 +27,12 @@ shown.ColorArrayName = ["POINTS", ""]
 view.CameraPosition = [0.0, -8.5, 5.0]
 view.CameraFocalPoint = [0.0, 0.0, 0.0]
 view.CameraViewUp = [0.0, 0.0, 1.0]
-SaveState(os.path.join(args.output or HERE, "morph4d-slice.pvsm"))
+state = os.path.join(args.output or HERE, "morph4d-slice.pvsm")
+SaveState(state)
+# A state names its files by absolute path; the committed one must not name this machine's
+# checkout (it is installed, and LoadState's data_directory relocates by file name anyway).
+source_root = os.path.dirname(os.path.dirname(os.path.abspath(HERE)))
+with open(state, encoding="utf-8") as handle:
+    text = handle.read()
+with open(state, "w", encoding="utf-8") as handle:
+    handle.write(text.replace(source_root + os.sep, "/frepkit-source/"))

@@ -36,3 +36,4 @@ with open(state, encoding="utf-8") as handle:
     text = handle.read()
 with open(state, "w", encoding="utf-8") as handle:
     handle.write(text.replace(source_root + os.sep, "/frepkit-source/"))
+print("state written to %s" % state)

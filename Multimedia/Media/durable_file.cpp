@@ -1,5 +1,7 @@
 #include "Media/durable_file.h"
 
+#include "Media/system_message.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <fcntl.h>
@@ -11,10 +13,7 @@ namespace frep::media
 namespace
 {
 
-std::string system_message(int error_number)
-{
-  return std::generic_category().message(error_number); // thread-safe, unlike strerror
-}
+using detail::system_message;
 
 // fsync of the file or directory at `path`, opened read-only: Linux syncs the inode's data
 // whatever the descriptor's mode.

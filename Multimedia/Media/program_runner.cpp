@@ -1,5 +1,7 @@
 #include "Media/program_runner.h"
 
+#include "Media/system_message.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <fcntl.h>
@@ -17,10 +19,7 @@ namespace frep::media
 namespace
 {
 
-std::string system_message(int error_number)
-{
-  return std::generic_category().message(error_number);
-}
+using detail::system_message;
 
 bool is_executable_file(const std::filesystem::path& path)
 {

@@ -1,5 +1,7 @@
 #include "Media/wav_writer.h"
 
+#include "Media/system_message.h"
+
 #include "Media/durable_file.h"
 
 #include <sndfile.h>
@@ -18,10 +20,7 @@ namespace frep::media
 namespace
 {
 
-std::string system_message(int error_number)
-{
-  return std::generic_category().message(error_number); // thread-safe, unlike strerror
-}
+using detail::system_message;
 
 // Owns the temporary file until it is renamed: any early return removes it, so a failure
 // leaves neither a half-written target nor a stray temporary behind.

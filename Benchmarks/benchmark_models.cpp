@@ -50,7 +50,7 @@ void box_from_expected(const std::filesystem::path& expected, BenchModel& model)
 
 } // namespace
 
-std::string sphere_union_model(int count, bool balanced)
+std::string sphere_union_model(int count, bool balanced, bool by_max)
 {
   std::mt19937_64 random(20261123);
   std::uniform_real_distribution<double> coordinate(-8.0, 8.0);
@@ -71,7 +71,14 @@ std::string sphere_union_model(int count, bool balanced)
     text << "  u = hfSphere(x, c1, 0.6);\n";
     for (int i = 2; i <= count; ++i)
     {
-      text << "  u = u | hfSphere(x, c" << i << ", 0.6);\n";
+      if (by_max)
+      {
+        text << "  u = max(u, hfSphere(x, c" << i << ", 0.6));\n";
+      }
+      else
+      {
+        text << "  u = u | hfSphere(x, c" << i << ", 0.6);\n";
+      }
     }
     text << "  my_model = u;\n}\n";
     return text.str();
@@ -147,6 +154,13 @@ std::vector<BenchModel> benchmark_models(const std::string& shared_dir)
     model.hi = { 8, 8, 8 };
     result.push_back(std::move(model));
   }
+  BenchModel by_max;
+  by_max.name = "max200_chain";
+  by_max.text = sphere_union_model(200, false, true);
+  by_max.object = "my_model";
+  by_max.lo = { -8, -8, -8 };
+  by_max.hi = { 8, 8, 8 };
+  result.push_back(std::move(by_max));
   return result;
 }
 

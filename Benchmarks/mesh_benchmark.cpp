@@ -1,6 +1,8 @@
 // Meshing time, side by side on the same box and grid:
 //   frepkit  — frep::mesh::extract_surface (interval culling, batch sampling of the surviving
-//              leaves, marching cubes, caps, gradient normals), all cores;
+//              leaves, marching cubes, caps, gradient normals), all cores; with and without
+//              the per-box tape simplification (identical surfaces; the column "instructions
+//              per sample" is the mean length of the tapes the samples ran);
 //   vtk      — how it is done in VTK today: vtkSampleFunction over a vtkImplicitFunction that
 //              calls the engine point by point (vtkFRepImplicitFunction), then vtkFlyingEdges3D,
 //              STDThread SMP backend.
@@ -28,6 +30,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -63,19 +66,26 @@ struct Run
   double seconds = 0;
   std::size_t triangles = 0;
   std::size_t samples = 0;
+  std::size_t sample_instructions = 0;
+  double extract = 0, merge = 0, normals = 0; // seconds of the phases (ExtractStatistics)
+  double cpu = 0; // processor seconds of all threads (robust to other load on the machine)
 };
 
 Run run_frepkit(const std::shared_ptr<const frep::Tape>& tape, const frep::bench::BenchModel& m,
-  int n, bool& closed)
+  int n, bool simplify, bool& closed)
 {
   frep::mesh::Grid grid;
   grid.lo = m.lo;
   grid.hi = m.hi;
   grid.samples = { n, n, n };
   const auto start = Clock::now();
-  const frep::mesh::ExtractResult r = frep::mesh::extract_surface(tape, grid);
+  const std::clock_t cpu_start = std::clock();
+  frep::mesh::ExtractOptions options;
+  options.simplify = simplify;
+  const frep::mesh::ExtractResult r = frep::mesh::extract_surface(tape, grid, options);
   Run run;
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  run.cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   if (!r.ok())
   {
     std::cerr << m.name << ": " << r.error << "\n";
@@ -83,6 +93,10 @@ Run run_frepkit(const std::shared_ptr<const frep::Tape>& tape, const frep::bench
   }
   run.triangles = r.surface.cell_count();
   run.samples = r.statistics.samples;
+  run.sample_instructions = r.statistics.sample_instructions;
+  run.extract = r.statistics.seconds_extract;
+  run.merge = r.statistics.seconds_merge;
+  run.normals = r.statistics.seconds_normals;
   closed = frep::mesh::analyse_topology(r.surface).watertight_and_oriented();
   return run;
 }
@@ -158,8 +172,9 @@ int main(int argc, char** argv)
   }
   vtkSMPTools::SetBackend("STDThread");
   const auto models = frep::bench::benchmark_models(FREPKIT_SHARED_DIR);
-  std::printf("| model | grid | frepkit (s) | triangles | samples evaluated | closed | vtk baseline (s) "
-              "| triangles | speed-up |\n|---|---:|---:|---:|---:|---|---:|---:|---:|\n");
+  std::printf("| model | grid | frepkit (s) | cpu (s) | extract / merge / normals (s) | unsimplified (s) | cpu (s) | instructions per sample "
+              "(unsimplified) | triangles | samples evaluated | closed | vtk baseline (s) "
+              "| triangles | speed-up |\n|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|\n");
   for (const std::string& name : names)
   {
     const auto it = std::find_if(models.begin(), models.end(),
@@ -176,14 +191,26 @@ int main(int argc, char** argv)
     for (int n : sizes)
     {
       std::vector<double> times;
-      Run ours;
-      bool closed = false;
+      Run ours, unsimplified;
+      bool closed = false, closed_unsimplified = false;
       for (int r = 0; r < repeat; ++r)
       {
-        ours = run_frepkit(tape, *it, n, closed);
+        ours = run_frepkit(tape, *it, n, true, closed);
         times.push_back(ours.seconds);
       }
       const double frepkit_seconds = median(times);
+      times.clear();
+      for (int r = 0; r < repeat; ++r)
+      {
+        unsimplified = run_frepkit(tape, *it, n, false, closed_unsimplified);
+        times.push_back(unsimplified.seconds);
+      }
+      const double unsimplified_seconds = median(times);
+      if (unsimplified.triangles != ours.triangles)
+      {
+        std::cerr << name << ": simplified and full tapes gave different surfaces\n";
+        return 1;
+      }
       std::string vtk_cell = "-", vtk_triangles = "-", speedup = "-";
       if (double(n) * n * n <= vtk_max_samples)
       {
@@ -202,8 +229,12 @@ int main(int argc, char** argv)
         std::snprintf(buffer, sizeof buffer, "%.1fx", vtk_seconds / frepkit_seconds);
         speedup = buffer;
       }
-      std::printf("| %s | %d^3 | %.3f | %zu | %.1f%% | %s | %s | %s | %s |\n", name.c_str(), n,
-        frepkit_seconds, ours.triangles, 100.0 * double(ours.samples) / (double(n) * n * n),
+      const auto per_sample = [](const Run& run)
+      { return run.samples ? double(run.sample_instructions) / double(run.samples) : 0.0; };
+      std::printf("| %s | %d^3 | %.3f | %.3f | %.3f / %.3f / %.3f | %.3f | %.3f | %.1f (%.0f) | %zu | %.1f%% | %s | %s | %s | %s |\n",
+        name.c_str(), n, frepkit_seconds, ours.cpu, ours.extract, ours.merge, ours.normals,
+        unsimplified_seconds, unsimplified.cpu, per_sample(ours),
+        per_sample(unsimplified), ours.triangles, 100.0 * double(ours.samples) / (double(n) * n * n),
         closed ? "yes" : "NO", vtk_cell.c_str(), vtk_triangles.c_str(), speedup.c_str());
       std::fflush(stdout);
     }

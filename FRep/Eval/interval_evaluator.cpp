@@ -570,6 +570,59 @@ bool may_be_zero(const Range& a)
   return a.v.lo <= 0 && a.v.hi >= 0;
 }
 
+// Choices (tape_simplifier.h). The interval of a slot encloses the values the point evaluator
+// computes, so a comparison decided on the ranges is decided at every point. With a NaN a, a > b
+// and a < b are false (the result is b); with a NaN b they are false too (the result is b, NaN).
+
+/// max(a, b) = (a > b) ? a : b
+Choice max_choice(const Range& a, const Range& b)
+{
+  if (a.v.hi <= b.v.lo)
+  {
+    return Choice::TakeB; // a > b is false for every non-NaN a, and for NaN a or b
+  }
+  if (!a.nan && !b.nan && a.v.lo > b.v.hi)
+  {
+    return Choice::TakeA;
+  }
+  return Choice::Keep;
+}
+
+/// min(a, b) = (a < b) ? a : b
+Choice min_choice(const Range& a, const Range& b)
+{
+  if (a.v.lo >= b.v.hi)
+  {
+    return Choice::TakeB;
+  }
+  if (!a.nan && !b.nan && a.v.hi < b.v.lo)
+  {
+    return Choice::TakeA;
+  }
+  return Choice::Keep;
+}
+
+/// Whether the opcode's result is always 1.0 or 0.0 (boolean() ranges are exact for them).
+bool produces_boolean(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Eq:
+    case Opcode::Ne:
+    case Opcode::Lt:
+    case Opcode::Le:
+    case Opcode::Gt:
+    case Opcode::Ge:
+    case Opcode::Truthy:
+    case Opcode::Not:
+    case Opcode::And:
+    case Opcode::Or:
+      return true;
+    default:
+      return false;
+  }
+}
+
 } // namespace
 
 IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
@@ -585,6 +638,21 @@ IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
 }
 
 IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
+{
+  return run(box, nullptr);
+}
+
+IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box, std::span<Choice> choices)
+{
+  if (choices.size() != tape_->code.size())
+  {
+    throw std::invalid_argument("IntervalEvaluator::evaluate: one choice per instruction expected");
+  }
+  std::fill(choices.begin(), choices.end(), Choice::Keep);
+  return run(box, choices.data());
+}
+
+IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* choices)
 {
   const Tape& tape = *tape_;
   if (box.size() < tape.input_count)
@@ -609,8 +677,9 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
     slots_[s] = r.v;
     may_nan_[s] = r.nan ? 1 : 0;
   };
-  for (const Instruction& ins : tape.code)
+  for (std::size_t at = 0; at < tape.code.size(); ++at)
   {
+    const Instruction& ins = tape.code[at];
     const Opcode op = ins.op;
     if (op == Opcode::Call)
     {
@@ -633,7 +702,12 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
     const Range b = operands >= 2 ? get(ins.b) : Range{};
     if (op == Opcode::ErrorIf)
     {
-      result.may_fail = result.may_fail || may_be_nonzero(a);
+      const bool may_fire = may_be_nonzero(a);
+      result.may_fail = result.may_fail || may_fire;
+      if (choices && !may_fire)
+      {
+        choices[at] = Choice::Drop;
+      }
       continue;
     }
     Range r;
@@ -753,9 +827,17 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
         break;
       case Opcode::Max:
         r = max_min(a, b, true);
+        if (choices)
+        {
+          choices[at] = max_choice(a, b);
+        }
         break;
       case Opcode::Min:
         r = max_min(a, b, false);
+        if (choices)
+        {
+          choices[at] = min_choice(a, b);
+        }
         break;
       case Opcode::Union:
         r = r_function(a, b, true);
@@ -810,12 +892,20 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
         const bool take_b = may_be_nonzero(a);
         const bool take_c = may_be_zero(a);
         r = take_b && take_c ? hull(b, c) : (take_b ? b : c);
+        if (choices && take_b != take_c)
+        {
+          choices[at] = take_b ? Choice::TakeB : Choice::TakeC;
+        }
         break;
       }
       case Opcode::Input:
       case Opcode::ErrorIf:
       case Opcode::Call:
         break; // handled above
+    }
+    if (choices && produces_boolean(op) && r.v.lo == r.v.hi)
+    {
+      choices[at] = r.v.lo != 0.0 ? Choice::True : Choice::False;
     }
     put(ins.out, r);
   }

@@ -6,6 +6,7 @@
 
 #include "Compiler/tape.h"
 #include "Eval/interval.h"
+#include "Eval/tape_simplifier.h"
 
 #include <memory>
 #include <span>
@@ -30,7 +31,17 @@ public:
   /// Encloses F over the box given by one interval per tape input.
   IntervalResult evaluate(std::span<const Interval> box);
 
+  /// The same, and records in `choices` (one per instruction of the tape) what the box decides
+  /// about each instruction, for TapeSimplifier: Keep unless the instruction's result is one of
+  /// its operands, or a boolean constant, at every point of the box (see tape_simplifier.h).
+  /// Throws std::invalid_argument if choices.size() != tape().code.size().
+  IntervalResult evaluate(std::span<const Interval> box, std::span<Choice> choices);
+
+  const Tape& tape() const { return *tape_; }
+
 private:
+  IntervalResult run(std::span<const Interval> box, Choice* choices);
+
   std::shared_ptr<const Tape> tape_;
   std::vector<Interval> slots_;        // encloses the slot's non-NaN values over the box
   std::vector<unsigned char> may_nan_; // the slot may be NaN somewhere in the box

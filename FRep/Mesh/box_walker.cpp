@@ -9,39 +9,38 @@
 namespace frep::mesh::detail
 {
 
-namespace
+BoxWalker::Level::Level(std::shared_ptr<const Tape> t)
+  : tape(std::move(t))
+  , interval(tape)
+  , choices(tape->code.size())
+  , simplifiable(may_simplify(*tape))
 {
-// Walkers run on the extraction's threads already: their batch evaluator stays on the caller.
-BatchOptions single_threaded()
-{
-  BatchOptions options;
-  options.threads = 1;
-  return options;
 }
-} // namespace
 
 BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
   const ExtractOptions& options)
   : frame_(frame)
   , options_(options)
-  , interval_(tape)
-  , batch_(tape, single_threaded())
+  , caller_only_(std::make_shared<ThreadPool>(1))
+  , root_(tape)
 {
 }
 
 void BoxWalker::run(const CellBox& block, Piece& piece)
 {
   builder_.begin(&piece);
-  walk(block);
+  walk(block, root_);
 }
 
-void BoxWalker::walk(const CellBox& box)
+void BoxWalker::walk(const CellBox& box, Level& level)
 {
   Piece& piece = builder_.piece();
+  const bool simplify = options_.cull && options_.simplify && level.simplifiable;
   if (options_.cull)
   {
     ++piece.boxes_tested;
-    const BoxSign sign = classify(enclose(interval_, frame_, box), options_.iso);
+    const BoxSign sign = classify(
+      enclose(level.interval, frame_, box, simplify ? &level.choices : nullptr), options_.iso);
     if (sign != BoxSign::Unknown)
     {
       ++piece.boxes_culled;
@@ -52,6 +51,17 @@ void BoxWalker::walk(const CellBox& box)
       return;
     }
   }
+  // Below this box, evaluate only what the box left undecided.
+  std::unique_ptr<Level> simplified;
+  if (simplify)
+  {
+    std::shared_ptr<const Tape> tape = simplifier_.simplify(*level.tape, level.choices);
+    if (tape && worth_switching(*tape, *level.tape))
+    {
+      simplified = std::make_unique<Level>(std::move(tape));
+    }
+  }
+  Level& below = simplified ? *simplified : level;
   const std::int64_t leaf_cells = options_.leaf_cells;
   bool is_leaf = true;
   for (int a = 0; a < frame_.dimension; ++a)
@@ -60,17 +70,17 @@ void BoxWalker::walk(const CellBox& box)
   }
   if (is_leaf)
   {
-    sample(box);
+    sample(box, below);
     leaf(box);
     return;
   }
   for (const CellBox& child : split(box, leaf_cells, frame_.dimension))
   {
-    walk(child);
+    walk(child, below);
   }
 }
 
-void BoxWalker::sample(const CellBox& box)
+void BoxWalker::sample(const CellBox& box, Level& level)
 {
   std::array<std::int64_t, 3> n{ 1, 1, 1 };
   for (int a = 0; a < frame_.dimension; ++a)
@@ -99,7 +109,14 @@ void BoxWalker::sample(const CellBox& box)
   }
   const std::array<const double*, 3> inputs{ xs_.data(), ys_.data(), zs_.data() };
   Piece& piece = builder_.piece();
-  piece.failed_samples += batch_.evaluate(
+  if (!level.batch)
+  {
+    BatchOptions options;
+    options.pool = caller_only_;
+    level.batch = std::make_unique<BatchEvaluator>(level.tape, options);
+  }
+  piece.sample_instructions += count * level.tape->code.size();
+  piece.failed_samples += level.batch->evaluate(
     std::span<const double* const>(inputs.data(), static_cast<std::size_t>(frame_.dimension)),
     count, values_.data());
   piece.samples += count;
@@ -174,6 +191,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
     stats.boxes_tested += piece.boxes_tested;
     stats.boxes_culled += piece.boxes_culled;
     stats.samples += piece.samples;
+    stats.sample_instructions += piece.sample_instructions;
     stats.failed_samples += piece.failed_samples;
   }
   stats.seconds_extract = seconds_since(start);

@@ -95,15 +95,16 @@ BoxSign classify(const IntervalResult& r, double iso)
   return BoxSign::Unknown;
 }
 
-IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box)
+IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
+  std::vector<Choice>* choices)
 {
   std::array<Interval, 3> intervals{};
   for (int a = 0; a < frame.dimension; ++a)
   {
     intervals[a] = Interval{ frame.coord(a, box.c0[a]), frame.coord(a, box.c1[a]) };
   }
-  return evaluator.evaluate(std::span<const Interval>(intervals.data(),
-    static_cast<std::size_t>(frame.dimension)));
+  const std::span<const Interval> corners(intervals.data(), static_cast<std::size_t>(frame.dimension));
+  return choices ? evaluator.evaluate(corners, *choices) : evaluator.evaluate(corners);
 }
 
 std::vector<CellBox> split(const CellBox& box, std::int64_t leaf, int dimension)

@@ -5,6 +5,7 @@
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
+#include "Eval/tape_simplifier.h"
 #include "Mesh/surface.h"
 
 #include <array>
@@ -74,6 +75,7 @@ struct Piece
   std::size_t failed_samples = 0;
   std::size_t boxes_tested = 0;
   std::size_t boxes_culled = 0;
+  std::size_t sample_instructions = 0;
 };
 
 /// Scratch of one worker: the local index of the piece being built.
@@ -152,7 +154,10 @@ enum class BoxSign
 BoxSign classify(const IntervalResult& r, double iso);
 
 /// The enclosure of F over the cells' box (positions of its extreme samples).
-IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box);
+/// Encloses F over the box's samples; with `choices`, also records what the box decides about the
+/// tape's instructions (IntervalEvaluator::evaluate with choices).
+IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
+  std::vector<Choice>* choices = nullptr);
 
 /// Splits `box` (some axis longer than `leaf` cells) into up to 8 children whose sizes are
 /// multiples of `leaf` except the last along each axis.
@@ -186,11 +191,25 @@ protected:
   PieceBuilder builder_;
 
 private:
-  void walk(const CellBox& box);
-  void sample(const CellBox& box);
+  /// A tape and its evaluators: the model's tape at the root, a simplified one below a box that
+  /// decided some of its instructions (tape_simplifier.h; the values are the same bit for bit).
+  struct Level
+  {
+    std::shared_ptr<const Tape> tape;
+    IntervalEvaluator interval;
+    std::unique_ptr<BatchEvaluator> batch; // made when the level samples
+    std::vector<Choice> choices;
+    bool simplifiable = false; // may_simplify(*tape)
 
-  IntervalEvaluator interval_;
-  BatchEvaluator batch_;
+    explicit Level(std::shared_ptr<const Tape> t);
+  };
+
+  void walk(const CellBox& box, Level& level);
+  void sample(const CellBox& box, Level& level);
+
+  std::shared_ptr<ThreadPool> caller_only_; // walkers run on the extraction's threads already
+  TapeSimplifier simplifier_;
+  Level root_;
   std::vector<double> xs_, ys_, zs_, values_;
 };
 

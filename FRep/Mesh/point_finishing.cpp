@@ -3,10 +3,16 @@
 #include "Mesh/extraction_common.h"
 
 #include "Eval/batch_evaluator.h"
+#include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
+#include "Eval/tape_simplifier.h"
 #include "Eval/thread_pool.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <limits>
+#include <span>
 
 namespace frep::mesh::detail
 {
@@ -137,20 +143,79 @@ void fill_missing_normals(Surface& surface, const std::vector<unsigned char>& mi
 // four evaluations per point (F at the point and one step along each axis) cost far less than a
 // forward-mode gradient of a long tape; the step (1e-3 of a cell) is far below the grid's
 // resolution (its truncation error is invisible in a normal) and far above rounding.
-void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
-  const std::vector<std::uint64_t>& keys, const std::shared_ptr<ThreadPool>& pool,
-  Surface& surface, std::vector<unsigned char>& missing)
+constexpr int probes = 4; // the point, then +h along x, y, z
+
+/// Appends the probes of point p to the input columns.
+void add_probes(const Surface& surface, std::size_t p, const std::array<double, 3>& h,
+  std::array<std::vector<double>, 3>& in)
 {
-  constexpr int probes = 4; // the point, then +h along x, y, z
+  for (int d = 0; d < probes; ++d)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      in[a].push_back(surface.points[3 * p + static_cast<std::size_t>(a)] + (d == a + 1 ? h[a] : 0.0));
+    }
+  }
+}
+
+/// The normals of points ids from F at their probes (values, probes per point).
+void store_normals(const std::vector<double>& values, std::span<const std::size_t> ids,
+  const std::array<double, 3>& h, Surface& surface, std::vector<unsigned char>& missing)
+{
+  for (std::size_t q = 0; q < ids.size(); ++q)
+  {
+    const double* v = &values[probes * q];
+    // F grows inwards: the outward normal is -grad F.
+    const double g[3] = { (v[0] - v[1]) / h[0], (v[0] - v[2]) / h[1], (v[0] - v[3]) / h[2] };
+    const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    float* n = &surface.normals[3 * ids[q]];
+    if (!(length > 0) || !std::isfinite(length))
+    {
+      missing[ids[q]] = 1;
+      continue;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      n[a] = static_cast<float>(g[a] / length);
+    }
+  }
+}
+
+/// Evaluates F at the probes of `ids` with `batch` and stores their normals.
+void probe_normals(BatchEvaluator& batch, std::span<const std::size_t> ids,
+  const std::array<double, 3>& h, Surface& surface, std::vector<unsigned char>& missing,
+  std::array<std::vector<double>, 3>& in, std::vector<double>& values)
+{
+  for (auto& column : in)
+  {
+    column.clear();
+  }
+  for (std::size_t p : ids)
+  {
+    add_probes(surface, p, h, in);
+  }
+  values.resize(in[0].size());
+  const std::array<const double*, 3> inputs{ in[0].data(), in[1].data(), in[2].data() };
+  batch.evaluate(inputs, values.size(), values.data());
+  store_normals(values, ids, h, surface, missing);
+}
+
+/// Points whose normals come from differences (not the grid vertices of caps, done by
+/// cap_normals).
+bool needs_difference_normal(std::uint64_t key)
+{
+  return key == unshared_key || key % 4u != 3u;
+}
+
+/// Every point with the full tape, in chunks spread over the pool by the batch evaluator.
+void full_tape_normals(const std::shared_ptr<const Tape>& tape, const std::vector<std::uint64_t>& keys,
+  const std::shared_ptr<ThreadPool>& pool, const std::array<double, 3>& h, Surface& surface,
+  std::vector<unsigned char>& missing)
+{
   const std::size_t count = surface.point_count();
   BatchOptions batch_options;
   batch_options.pool = pool;
   BatchEvaluator batch(tape, batch_options);
-  std::array<double, 3> h{};
-  for (int a = 0; a < 3; ++a)
-  {
-    h[a] = 1e-3 * frame.step[a];
-  }
   constexpr std::size_t chunk = 1 << 15;
   std::array<std::vector<double>, 3> in;
   std::vector<double> values;
@@ -159,45 +224,193 @@ void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame
   {
     const std::size_t end = std::min(count, begin + chunk);
     ids.clear();
-    for (auto& column : in)
-    {
-      column.clear();
-    }
     for (std::size_t p = begin; p < end; ++p)
     {
-      if (keys[p] != unshared_key && keys[p] % 4u == 3u)
+      if (needs_difference_normal(keys[p]))
       {
-        continue; // a grid vertex of a cap: done by cap_normals
-      }
-      ids.push_back(p);
-      for (int d = 0; d < probes; ++d)
-      {
-        for (int a = 0; a < 3; ++a)
-        {
-          in[a].push_back(surface.points[3 * p + static_cast<std::size_t>(a)] + (d == a + 1 ? h[a] : 0.0));
-        }
+        ids.push_back(p);
       }
     }
-    values.resize(in[0].size());
-    const std::array<const double*, 3> inputs{ in[0].data(), in[1].data(), in[2].data() };
-    batch.evaluate(inputs, values.size(), values.data());
-    for (std::size_t q = 0; q < ids.size(); ++q)
+    probe_normals(batch, ids, h, surface, missing, in, values);
+  }
+}
+
+/// The box that holds the probes of the points on the grid edges starting at the vertices
+/// v0..v0+size-1 per axis: those edges end at most one vertex further; a point on an edge may be
+/// an ulp or so past its ends (interpolation rounds), and a probe adds h. The pad covers both,
+/// with room to spare (a wider box is only less tight).
+std::array<Interval, 3> probe_box(const GridFrame& frame, const std::array<std::int64_t, 3>& v0,
+  std::int64_t size, const std::array<double, 3>& h)
+{
+  std::array<Interval, 3> box{};
+  for (int a = 0; a < 3; ++a)
+  {
+    const double x0 = frame.coord(a, v0[a]);
+    const double x1 = frame.coord(a, v0[a] + size);
+    const double pad = h[a] + 16 * DBL_EPSILON * std::max(std::fabs(x0), std::fabs(x1));
+    box[a] = { x0 - pad, x1 + 2 * pad };
+  }
+  return box;
+}
+
+/// The same values brick by brick: the points on the grid edges that start in a brick of
+/// leaf_cells^3 vertices, with the tape simplified for the box that holds their probes, in two
+/// steps (a super-brick of 4^3 bricks from the full tape, then each brick from the super-brick's
+/// tape: simplifying the full tape for every brick would cost more than it saves on long tapes).
+/// tape_simplifier.h: the values are the full tape's bit for bit, so are the normals.
+void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+  const std::vector<std::uint64_t>& keys, const ExtractOptions& options,
+  const std::shared_ptr<ThreadPool>& pool, const std::array<double, 3>& h, Surface& surface,
+  std::vector<unsigned char>& missing)
+{
+  const std::int64_t brick = std::max(1, options.leaf_cells);
+  const std::int64_t super = 4 * brick;
+  const auto linear = [&](const std::array<std::int64_t, 3>& v, std::int64_t size)
+  {
+    std::array<std::uint64_t, 3> n{};
+    for (int a = 0; a < 3; ++a)
     {
-      const double* v = &values[probes * q];
-      // F grows inwards: the outward normal is -grad F.
-      const double g[3] = { (v[0] - v[1]) / h[0], (v[0] - v[2]) / h[1], (v[0] - v[3]) / h[2] };
-      const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-      float* n = &surface.normals[3 * ids[q]];
-      if (!(length > 0) || !std::isfinite(length))
-      {
-        missing[ids[q]] = 1;
-        continue;
-      }
-      for (int a = 0; a < 3; ++a)
-      {
-        n[a] = static_cast<float>(g[a] / length);
-      }
+      n[a] = static_cast<std::uint64_t>((frame.samples[a] + size - 1) / size);
     }
+    const auto c = [&](int a) { return static_cast<std::uint64_t>(v[a] / size); };
+    return (c(2) * n[1] + c(1)) * n[0] + c(0);
+  };
+  // (super-brick, brick, point) sorted; the cell-centre points (no edge) go last, full tape.
+  const std::uint64_t none = std::numeric_limits<std::uint64_t>::max();
+  struct Entry
+  {
+    std::uint64_t super, brick;
+    std::size_t point;
+    bool operator<(const Entry& o) const
+    {
+      return super != o.super ? super < o.super : brick != o.brick ? brick < o.brick : point < o.point;
+    }
+  };
+  std::vector<Entry> order;
+  order.reserve(keys.size());
+  for (std::size_t p = 0; p < keys.size(); ++p)
+  {
+    if (!needs_difference_normal(keys[p]))
+    {
+      continue;
+    }
+    if (keys[p] == unshared_key)
+    {
+      order.push_back({ none, none, p });
+      continue;
+    }
+    const EdgeOfKey e = decode(keys[p], frame);
+    order.push_back({ linear(e.vertex, super), linear(e.vertex, brick), p });
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<std::size_t> ids(order.size());
+  std::vector<std::size_t> super_begin;
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    ids[i] = order[i].point;
+    if (i == 0 || order[i].super != order[i - 1].super)
+    {
+      super_begin.push_back(i);
+    }
+  }
+  super_begin.push_back(order.size());
+
+  struct Participant
+  {
+    std::shared_ptr<ThreadPool> caller_only = std::make_shared<ThreadPool>(1);
+    IntervalEvaluator interval;
+    std::vector<Choice> choices, brick_choices;
+    TapeSimplifier simplifier;
+    std::unique_ptr<BatchEvaluator> full;
+    std::array<std::vector<double>, 3> in;
+    std::vector<double> values;
+
+    explicit Participant(const std::shared_ptr<const Tape>& tape)
+      : interval(tape)
+      , choices(tape->code.size())
+    {
+      full = std::make_unique<BatchEvaluator>(tape, options());
+    }
+    BatchOptions options() const
+    {
+      BatchOptions o;
+      o.pool = caller_only;
+      return o;
+    }
+  };
+  const auto corner = [&](std::size_t point, std::int64_t size)
+  {
+    std::array<std::int64_t, 3> v = decode(keys[point], frame).vertex;
+    for (auto& c : v)
+    {
+      c = c / size * size;
+    }
+    return v;
+  };
+  std::vector<std::unique_ptr<Participant>> participants(static_cast<std::size_t>(pool->size()));
+  pool->parallel_for(super_begin.size() - 1,
+    [&](std::size_t g, int slot)
+    {
+      auto& mine = participants[static_cast<std::size_t>(slot)];
+      if (!mine)
+      {
+        mine = std::make_unique<Participant>(tape);
+      }
+      Participant& pt = *mine;
+      const std::size_t begin = super_begin[g], end = super_begin[g + 1];
+      if (order[begin].super == none)
+      {
+        probe_normals(*pt.full, std::span<const std::size_t>(ids.data() + begin, end - begin), h,
+          surface, missing, pt.in, pt.values);
+        return;
+      }
+      const std::span<const std::size_t> all(ids.data() + begin, end - begin);
+      pt.interval.evaluate(probe_box(frame, corner(ids[begin], super), super, h), pt.choices);
+      const std::shared_ptr<const Tape> super_tape = pt.simplifier.simplify(*tape, pt.choices);
+      if (!super_tape || !worth_switching(*super_tape, *tape))
+      {
+        probe_normals(*pt.full, all, h, surface, missing, pt.in, pt.values);
+        return;
+      }
+      IntervalEvaluator super_interval(super_tape);
+      pt.brick_choices.resize(super_tape->code.size());
+      for (std::size_t b = begin; b < end;)
+      {
+        std::size_t e = b;
+        while (e < end && order[e].brick == order[b].brick)
+        {
+          ++e;
+        }
+        const std::span<const std::size_t> group(ids.data() + b, e - b);
+        super_interval.evaluate(probe_box(frame, corner(ids[b], brick), brick, h), pt.brick_choices);
+        std::shared_ptr<const Tape> brick_tape = pt.simplifier.simplify(*super_tape, pt.brick_choices);
+        if (!brick_tape || !worth_switching(*brick_tape, *super_tape))
+        {
+          brick_tape = super_tape;
+        }
+        BatchEvaluator batch(brick_tape, pt.options());
+        probe_normals(batch, group, h, surface, missing, pt.in, pt.values);
+        b = e;
+      }
+    });
+}
+
+void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+  const std::vector<std::uint64_t>& keys, const ExtractOptions& options,
+  const std::shared_ptr<ThreadPool>& pool, Surface& surface, std::vector<unsigned char>& missing)
+{
+  std::array<double, 3> h{};
+  for (int a = 0; a < 3; ++a)
+  {
+    h[a] = 1e-3 * frame.step[a];
+  }
+  if (options.cull && options.simplify && may_simplify(*tape))
+  {
+    brick_normals(tape, frame, keys, options, pool, h, surface, missing);
+  }
+  else
+  {
+    full_tape_normals(tape, keys, pool, h, surface, missing);
   }
 }
 
@@ -261,7 +474,7 @@ void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     surface.normals.assign(3 * count, 0.0f);
     std::vector<unsigned char> missing(count, 0);
     cap_normals(frame, keys, surface);
-    difference_normals(tape, frame, keys, pool, surface, missing);
+    difference_normals(tape, frame, keys, options, pool, surface, missing);
     fill_missing_normals(surface, missing);
   }
   const int attribute_count = static_cast<int>(tape->outputs.size()) - 1;

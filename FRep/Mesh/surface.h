@@ -50,6 +50,10 @@ struct ExtractOptions
   /// Root refinement steps per point along its grid edge (0 = linear interpolation only).
   int refine_steps = 0;
   bool cull = true; ///< interval culling; off samples every grid point (for tests/measurements)
+  /// Below a box, evaluate a tape simplified for it (Eval/tape_simplifier.h: min/max, selects and
+  /// checks the box decides). The samples' values are the full tape's bit for bit, so the surface
+  /// is identical either way; off is for tests and measurements. Needs `cull`.
+  bool simplify = true;
   /// Cells per axis of the smallest box the culling tests before sampling it.
   int leaf_cells = 8;
   /// Refuse grids with more samples than this (the time would be unbounded) with an error;
@@ -88,6 +92,7 @@ struct ExtractStatistics
   std::size_t boxes_tested = 0;     ///< interval evaluations
   std::size_t boxes_culled = 0;     ///< boxes proven inside or outside
   std::size_t samples = 0;          ///< points evaluated (F)
+  std::size_t sample_instructions = 0; ///< tape instructions run for them (simplified tapes are shorter)
   std::size_t dense_samples = 0;    ///< points a dense run evaluates
   std::size_t failed_samples = 0;   ///< points whose evaluation raised a run-time error (NaN)
   double seconds_extract = 0;       ///< culling, sampling and polygonising

@@ -5,7 +5,9 @@
 //  - IntervalEvaluator: on random boxes, every successfully evaluated sample lies inside the
 //    enclosure (unless the enclosure is the whole line), and may_fail is set when a sample
 //    failed;
-//  - GradientEvaluator's F equals the point value.
+//  - GradientEvaluator's F equals the point value;
+//  - tapes simplified for a box (TapeSimplifier, recursively for a sub-box) give the full tape's
+//    outputs and error ids bit for bit at every sampled point of the box.
 #include "conformance_case.h"
 
 #include "Compiler/model.h"
@@ -13,6 +15,7 @@
 #include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
+#include "Eval/tape_simplifier.h"
 #include "Language/parser.h"
 
 #include <gtest/gtest.h>
@@ -277,6 +280,113 @@ TEST(Consistency, GradientValueEqualsPointValue)
                                               << " != point " << expected;
     }
   }
+}
+
+/// A random box around `centre` with half-widths up to `size`.
+std::vector<frep::Interval> random_box(const std::vector<double>& centre, std::size_t n, double size,
+  std::mt19937_64& rng)
+{
+  std::vector<frep::Interval> box(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double c = k < centre.size() ? centre[k] : 0.0;
+    const double r = std::uniform_real_distribution<double>(0, size)(rng);
+    box[k] = { c - r, c + r };
+  }
+  return box;
+}
+
+/// A point of the box: corners for i < 2, else uniform (clamped: lo + t*(hi-lo) may round past).
+std::vector<double> point_in(const std::vector<frep::Interval>& box, int i, std::mt19937_64& rng)
+{
+  std::vector<double> x(box.size());
+  for (std::size_t k = 0; k < box.size(); ++k)
+  {
+    const double t = i < 2 ? i : std::uniform_real_distribution<double>(0, 1)(rng);
+    x[k] = std::clamp(box[k].lo + t * (box[k].hi - box[k].lo), box[k].lo, box[k].hi);
+  }
+  return x;
+}
+
+/// Every output and the error id of `simplified` equal `full`'s at x, bit for bit.
+void expect_same_outputs(frep::PointEvaluator& full, frep::PointEvaluator& simplified,
+  const std::vector<double>& x, const std::string& id)
+{
+  std::vector<double> expected(full.tape().outputs.size()), got(simplified.tape().outputs.size());
+  ASSERT_EQ(expected.size(), got.size()) << id;
+  const int expected_error = full.evaluate(x, expected);
+  const int error = simplified.evaluate(x, got);
+  ASSERT_EQ(error, expected_error) << id << ": error ids differ";
+  for (std::size_t o = 0; o < expected.size(); ++o)
+  {
+    ASSERT_TRUE(same_bits(got[o], expected[o]))
+      << id << ": output " << o << " simplified " << got[o] << " full " << expected[o];
+  }
+}
+
+TEST(Consistency, SimplifiedTapesEqualFullTapesBitForBit)
+{
+  std::mt19937_64 rng(17);
+  frep::TapeSimplifier simplifier;
+  std::size_t boxes = 0, simplified_boxes = 0, samples = 0;
+  std::size_t full_length = 0, simplified_length = 0;
+  for (const Subject& s : cached_subjects())
+  {
+    const std::size_t n = s.tape->input_count;
+    frep::IntervalEvaluator interval(s.tape);
+    frep::PointEvaluator full(s.tape);
+    std::vector<frep::Choice> choices(s.tape->code.size());
+    for (const auto& centre : probe_points(s, 10, rng))
+    {
+      for (const double size : { 1e-3, 0.1, 1.0, 5.0 })
+      {
+        const std::vector<frep::Interval> box = random_box(centre, n, size, rng);
+        interval.evaluate(box, choices);
+        ++boxes;
+        const std::shared_ptr<const frep::Tape> tape = simplifier.simplify(*s.tape, choices);
+        if (!tape)
+        {
+          continue;
+        }
+        ++simplified_boxes;
+        full_length += s.tape->code.size();
+        simplified_length += tape->code.size();
+        frep::PointEvaluator simplified(tape);
+        for (int i = 0; i < 30; ++i)
+        {
+          expect_same_outputs(full, simplified, point_in(box, i, rng), s.id);
+          ++samples;
+        }
+        // Again inside a quarter of the box, from the simplified tape (as the mesher recurses).
+        std::vector<frep::Interval> inner(n);
+        for (std::size_t k = 0; k < n; ++k)
+        {
+          const double w = (box[k].hi - box[k].lo) / 4;
+          inner[k] = { box[k].lo + w, std::min(box[k].hi, box[k].lo + 2 * w) };
+        }
+        frep::IntervalEvaluator inner_interval(tape);
+        std::vector<frep::Choice> inner_choices(tape->code.size());
+        inner_interval.evaluate(inner, inner_choices);
+        const std::shared_ptr<const frep::Tape> twice = simplifier.simplify(*tape, inner_choices);
+        if (!twice)
+        {
+          continue;
+        }
+        frep::PointEvaluator simplified_twice(twice);
+        for (int i = 0; i < 10; ++i)
+        {
+          expect_same_outputs(full, simplified_twice, point_in(inner, i, rng), s.id + " (twice)");
+          ++samples;
+        }
+      }
+    }
+  }
+  std::printf("[consistency] %zu of %zu boxes simplified (%zu -> %zu instructions); %zu samples "
+              "equal the full tapes'\n",
+    simplified_boxes, boxes, full_length, simplified_length, samples);
+  // The suite has min/max and conditionals: simplification must happen, or this test tests nothing.
+  EXPECT_GT(simplified_boxes, boxes / 20);
+  EXPECT_LT(simplified_length, full_length);
 }
 
 } // namespace

@@ -1,5 +1,8 @@
 // Surface and contour extraction: closed, manifold, outward-oriented meshes with the right
-// volume, area and topology; culling changes nothing but the work; bad requests are errors.
+// volume, area and topology; culling and tape simplification change nothing but the work; bad
+// requests are errors.
+#include "conformance_case.h"
+
 #include "Compiler/model.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/thread_pool.h"
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -198,6 +202,98 @@ TEST(SurfaceExtraction, CullingGivesTheDenseMeshAndThreadsDoNotMatter)
   const ExtractResult c = extract_surface(tape, grid, culled);
   EXPECT_EQ(b.surface.points, c.surface.points);
   EXPECT_EQ(b.surface.cells, c.surface.cells);
+}
+
+/// The bit patterns of floats (NaN attributes of failed points compare equal to themselves).
+std::vector<std::uint32_t> bits_of(const std::vector<float>& v)
+{
+  std::vector<std::uint32_t> out(v.size());
+  std::memcpy(out.data(), v.data(), v.size() * sizeof(float));
+  return out;
+}
+
+/// Meshes `tape` with and without per-box tape simplification and expects identical arrays:
+/// points, triangles, normals and attributes bit for bit (the values are the same, so is all).
+/// Returns the instructions run per sample with and without.
+std::pair<double, double> expect_simplification_changes_nothing(
+  const std::shared_ptr<const Tape>& tape, const Grid& grid, const std::string& what)
+{
+  ExtractOptions simplified;
+  simplified.threads = 2;
+  ExtractOptions full = simplified;
+  full.simplify = false;
+  const ExtractResult a = extract_surface(tape, grid, simplified);
+  const ExtractResult b = extract_surface(tape, grid, full);
+  EXPECT_TRUE(a.ok() && b.ok()) << what << ": " << a.error << b.error;
+  EXPECT_EQ(a.surface.points, b.surface.points) << what;
+  EXPECT_EQ(a.surface.cells, b.surface.cells) << what;
+  EXPECT_EQ(bits_of(a.surface.normals), bits_of(b.surface.normals)) << what;
+  EXPECT_EQ(bits_of(a.surface.attributes), bits_of(b.surface.attributes)) << what;
+  EXPECT_EQ(a.statistics.samples, b.statistics.samples) << what;
+  EXPECT_EQ(a.statistics.failed_samples, b.statistics.failed_samples) << what;
+  const auto per_sample = [](const ExtractResult& r)
+  { return r.statistics.samples ? double(r.statistics.sample_instructions) / double(r.statistics.samples) : 0.0; };
+  return { per_sample(a), per_sample(b) };
+}
+
+TEST(SurfaceExtraction, SimplifiedTapesGiveTheSameSurfaceBitForBit)
+{
+  // min/max, conditionals, a check that fails in part of the box (sqrt), attributes.
+  std::ostringstream spheres;
+  spheres << "my_model(x[3], a[1], s[1]) { u = -100;";
+  for (int i = 0; i < 24; ++i)
+  {
+    const double cx = -6 + (i % 4) * 4, cy = -6 + (i / 4 % 3) * 5, cz = -5 + (i / 12) * 9;
+    spheres << " u = max(u, 2.2^2 - (x[1]-(" << cx << "))^2 - (x[2]-(" << cy << "))^2 - (x[3]-("
+            << cz << "))^2);";
+  }
+  spheres << " if x[1] > 1 then w = min(u, x[3] + 7); else w = u; endif;"
+             " r = sqrt(x[2] + 8); s[1] = x[1] * r; my_model = min(w, r); }";
+  const auto tape = compile(spheres.str());
+  const auto [with, without] =
+    expect_simplification_changes_nothing(tape, cube_grid(9, 90), "max of 24 spheres");
+  // The leaves see a few spheres each: if simplification stopped working, this would fail.
+  EXPECT_LT(with * 2, without) << with << " vs " << without << " instructions per sample";
+}
+
+TEST(SurfaceExtraction, SimplificationChangesNothingOnTheExternalModels)
+{
+  namespace fc = frep::conformance;
+  const std::vector<fc::ConformanceCase> cases =
+    fc::load_model_cases(std::filesystem::path(FREPKIT_SHARED_DIR) / "hyperfun" / "models");
+  int meshed = 0;
+  for (const fc::ConformanceCase& c : cases)
+  {
+    if (c.points.empty())
+    {
+      continue;
+    }
+    const ParseResult parsed = parse_program(c.source, c.program_path.string());
+    ASSERT_TRUE(parsed.ok()) << c.id();
+    const int object = ast::select_object(*parsed.program, c.object, ast::NameMatch::Exact);
+    const auto compiled = Model::compile(parsed.program, object);
+    ASSERT_TRUE(compiled.model) << c.id();
+    if (compiled.model->x_dim() != 3)
+    {
+      continue;
+    }
+    // The box of the reference points (where the model's author looked at it).
+    Grid grid;
+    grid.lo = { 1e300, 1e300, 1e300 };
+    grid.hi = { -1e300, -1e300, -1e300 };
+    for (const fc::CasePoint& p : c.points)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        grid.lo[k] = std::min(grid.lo[k], p.x[k]);
+        grid.hi[k] = std::max(grid.hi[k], p.x[k]);
+      }
+    }
+    grid.samples = { 64, 64, 64 };
+    expect_simplification_changes_nothing(compiled.model->tape(c.points.front().a), grid, c.id());
+    ++meshed;
+  }
+  EXPECT_GE(meshed, 15);
 }
 
 TEST(SurfaceExtraction, PiecesTogetherGiveTheWholeMesh)

@@ -1,6 +1,7 @@
 #include "model_loading.h"
 
 #include "Language/parser.h"
+#include "Language/vm_reader.h"
 #include "user_error.h"
 
 #include <fstream>
@@ -23,7 +24,9 @@ LoadedProgram load_program(const std::string& path)
   {
     throw UserError(path + ": cannot read the model file");
   }
-  frep::ParseResult parsed = frep::parse_program(text, path);
+  // .vm tapes (the Prospero Challenge's format) read as a one-object HyperFun program.
+  frep::ParseResult parsed =
+    frep::is_vm_file(path) ? frep::parse_vm(text, path) : frep::parse_program(text, path);
   return LoadedProgram{ path, parsed.program, std::move(parsed.diagnostics) };
 }
 

@@ -37,49 +37,51 @@ void check_tape(const Tape& tape, const char* who)
   for (std::size_t i = 0; i < tape.code.size(); ++i)
   {
     const Instruction& ins = tape.code[i];
-    const std::string at = "instruction " + std::to_string(i);
+    // (the message is built only on failure: this runs for every tape an evaluator takes,
+    // simplified tapes per box included)
+    const auto at = [i] { return "instruction " + std::to_string(i); };
     if (static_cast<unsigned>(ins.op) > static_cast<unsigned>(Opcode::Call))
     {
-      fail(who, at + " has an unknown opcode");
+      fail(who, at() + " has an unknown opcode");
     }
     const bool writes = ins.op != Opcode::ErrorIf && ins.op != Opcode::Call;
     if ((writes && bad_slot(ins.out)) || (reads_a(ins.op) && bad_slot(ins.a)) ||
         (reads_b(ins.op) && bad_slot(ins.b)) || (reads_c(ins.op) && bad_slot(ins.c)))
     {
-      fail(who, at + " uses a slot beyond slot_count");
+      fail(who, at() + " uses a slot beyond slot_count");
     }
     if (ins.op == Opcode::Input &&
         (ins.index < 0 || static_cast<std::uint32_t>(ins.index) >= tape.input_count))
     {
-      fail(who, at + " reads an input beyond input_count");
+      fail(who, at() + " reads an input beyond input_count");
     }
     if (ins.op == Opcode::ErrorIf && ins.index <= 0)
     {
-      fail(who, at + " raises a non-positive error id");
+      fail(who, at() + " raises a non-positive error id");
     }
     if (ins.op == Opcode::Call)
     {
       if (ins.index < 0 || static_cast<std::size_t>(ins.index) >= tape.calls.size())
       {
-        fail(who, at + " calls a missing call site");
+        fail(who, at() + " calls a missing call site");
       }
       const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
       if (!site.function)
       {
-        fail(who, at + " calls a site without a function");
+        fail(who, at() + " calls a site without a function");
       }
       for (std::uint32_t slot : site.inputs)
       {
         if (bad_slot(slot))
         {
-          fail(who, at + ": call input slot beyond slot_count");
+          fail(who, at() + ": call input slot beyond slot_count");
         }
       }
       for (std::uint32_t slot : site.outputs)
       {
         if (bad_slot(slot))
         {
-          fail(who, at + ": call output slot beyond slot_count");
+          fail(who, at() + ": call output slot beyond slot_count");
         }
       }
     }

@@ -5,9 +5,9 @@
 // the batch kernel relies on an instruction not writing a slot it reads, as the emitter does).
 #include "Eval/tape_simplifier.h"
 
-#include "Compiler/tape_check.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 
@@ -22,6 +22,23 @@ constexpr std::uint32_t kForever = kNone - 1; // last use of an output: the end 
 bool writes_out(Opcode op)
 {
   return op != Opcode::ErrorIf && op != Opcode::Call;
+}
+
+/// operand_count per opcode, as a table (simplification runs per box: no call per instruction).
+std::array<std::uint8_t, 256> make_operand_table()
+{
+  std::array<std::uint8_t, 256> t{};
+  for (int o = 0; o <= static_cast<int>(Opcode::Call); ++o)
+  {
+    t[static_cast<std::size_t>(o)] = static_cast<std::uint8_t>(operand_count(static_cast<Opcode>(o)));
+  }
+  return t;
+}
+const std::array<std::uint8_t, 256> operand_table = make_operand_table();
+
+inline int operands(Opcode op)
+{
+  return operand_table[static_cast<std::size_t>(op)];
 }
 } // namespace
 
@@ -74,7 +91,17 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
 
   // (1) Resolve choices.
   value_of_.assign(tape.slot_count, kNone);
-  ssa_.clear();
+  // About one value per instruction (written by index: push_back was a tenth of the time).
+  ssa_.resize(tape.code.size() + 3);
+  std::size_t ssa_count = 0;
+  const auto emit = [&](const Instruction& ins)
+  {
+    if (ssa_count == ssa_.size())
+    {
+      ssa_.resize(2 * ssa_.size()); // constants for many slots read before any write
+    }
+    ssa_[ssa_count++] = ins;
+  };
   site_inputs_.clear();
   site_outputs_.clear();
   std::uint32_t values = 0;
@@ -86,7 +113,7 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
     c.op = Opcode::Const;
     c.imm = v;
     c.out = values++;
-    ssa_.push_back(c);
+    emit(c);
     return c.out;
   };
   // A slot read before any write holds the register file's initial 0 (no producer emits that).
@@ -144,18 +171,18 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       n.c = static_cast<std::uint32_t>(i); // the original site, until pass (3)
       site_inputs_.push_back(std::move(in));
       site_outputs_.push_back(std::move(out));
-      ssa_.push_back(n);
+      emit(n);
       continue;
     }
-    if (eval::reads_a(ins.op))
+    if (operands(ins.op) >= 1)
     {
       n.a = read(ins.a);
     }
-    if (eval::reads_b(ins.op))
+    if (operands(ins.op) >= 2)
     {
       n.b = read(ins.b);
     }
-    if (eval::reads_c(ins.op))
+    if (operands(ins.op) >= 3)
     {
       n.c = read(ins.c);
     }
@@ -164,10 +191,10 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       n.out = values++;
       value_of_[ins.out] = n.out;
     }
-    ssa_.push_back(n);
+    emit(n);
   }
-  std::vector<std::uint32_t> output_values;
-  output_values.reserve(tape.outputs.size());
+  std::vector<std::uint32_t>& output_values = output_values_;
+  output_values.clear();
   for (std::uint32_t s : tape.outputs)
   {
     output_values.push_back(read(s));
@@ -179,7 +206,9 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
   {
     live_[v] = 1;
   }
-  std::vector<unsigned char> keep(ssa_.size(), 0);
+  ssa_.resize(ssa_count);
+  keep_.assign(ssa_.size(), 0);
+  std::vector<unsigned char>& keep = keep_;
   for (std::size_t j = ssa_.size(); j-- > 0;)
   {
     const Instruction& n = ssa_[j];
@@ -198,15 +227,15 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       }
       continue;
     }
-    if (eval::reads_a(n.op))
+    if (operands(n.op) >= 1)
     {
       live_[n.a] = 1;
     }
-    if (eval::reads_b(n.op))
+    if (operands(n.op) >= 2)
     {
       live_[n.b] = 1;
     }
-    if (eval::reads_c(n.op))
+    if (operands(n.op) >= 3)
     {
       live_[n.c] = 1;
     }
@@ -232,15 +261,15 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       }
       else
       {
-        if (eval::reads_a(n.op))
+        if (operands(n.op) >= 1)
         {
           last_use_[n.a] = j;
         }
-        if (eval::reads_b(n.op))
+        if (operands(n.op) >= 2)
         {
           last_use_[n.b] = j;
         }
-        if (eval::reads_c(n.op))
+        if (operands(n.op) >= 3)
         {
           last_use_[n.c] = j;
         }
@@ -254,6 +283,7 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
   }
 
   auto result = std::make_shared<Tape>();
+  result->code.reserve(static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1)));
   result->input_count = tape.input_count;
   result->errors = tape.errors;
   slot_of_.assign(values, kNone);
@@ -319,7 +349,7 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       continue;
     }
     const std::uint32_t a = n.a, b = n.b, c = n.c;
-    const bool ra = eval::reads_a(n.op), rb = eval::reads_b(n.op), rc = eval::reads_c(n.op);
+    const bool ra = operands(n.op) >= 1, rb = operands(n.op) >= 2, rc = operands(n.op) >= 3;
     n.a = ra ? slot_of_[a] : 0;
     n.b = rb ? slot_of_[b] : 0;
     n.c = rc ? slot_of_[c] : 0;

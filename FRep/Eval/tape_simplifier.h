@@ -64,6 +64,8 @@ private:
   std::vector<Instruction> ssa_;        // surviving instructions, operands as values
   std::vector<std::vector<std::uint32_t>> site_inputs_, site_outputs_; // calls, as values
   std::vector<unsigned char> live_;      // per value
+  std::vector<unsigned char> keep_;      // per instruction of ssa_
+  std::vector<std::uint32_t> output_values_;
   std::vector<std::uint32_t> last_use_;  // per value: index into ssa_ of its last reader
   std::vector<std::uint32_t> slot_of_;   // per value: its register in the result
   std::vector<std::uint32_t> free_slots_;

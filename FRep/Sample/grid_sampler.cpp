@@ -2,7 +2,9 @@
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/gradient_evaluator.h"
+#include "Eval/tape_simplifier.h"
 #include "Eval/thread_pool.h"
+#include "Sample/tiled_evaluation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,10 +49,13 @@ public:
     }
   }
 
-  // Writes the coordinates of the next `count` samples into coordinates[k][0..count).
-  void fill(std::vector<std::vector<double>>& coordinates, std::size_t count)
+  // Writes the coordinates of the next `count` samples into coordinates[k][0..count), and their
+  // runs along axis 0 into `runs`.
+  void fill(std::vector<std::vector<double>>& coordinates, std::size_t count,
+    std::vector<sample::SampleRun>& runs)
   {
     const std::size_t dimension = axes_.size();
+    runs.clear();
     std::size_t p = 0;
     while (p < count)
     {
@@ -58,6 +63,7 @@ public:
       const std::int64_t row_end = part_end(axes_[0]);
       const std::size_t run =
         std::min(count - p, static_cast<std::size_t>(row_end - index_[0]));
+      runs.push_back({ p, run, index_[0] });
       double* x = coordinates[0].data() + p;
       for (std::size_t q = 0; q < run; ++q)
       {
@@ -191,6 +197,13 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     batch_options.pool = pool;
     BatchEvaluator batch(tape, batch_options);
     result.threads = batch.threads();
+    // Tile by tile with tapes simplified per tile, when the tape has anything a box can decide.
+    std::unique_ptr<sample::TiledEvaluator> tiled;
+    if (options.simplify && may_simplify(*tape))
+    {
+      tiled = std::make_unique<sample::TiledEvaluator>(tape, pool);
+    }
+    std::vector<sample::SampleRun> runs;
 
     // Block buffers (structure of arrays, as the batch evaluator reads and writes them).
     const std::size_t total = grid_part_size(grid);
@@ -234,9 +247,18 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     for (std::size_t first = 0; first < total;)
     {
       const std::size_t count = std::min(block, total - first);
-      cursor.fill(coordinates, count);
-      result.errors += batch.evaluate(std::span<const double* const>(inputs), count,
-        values.data(), errors.data(), std::span<double* const>(attribute_out));
+      cursor.fill(coordinates, count, runs);
+      if (tiled)
+      {
+        result.errors += tiled->evaluate(std::span<const double* const>(inputs), runs, count,
+          values.data(), errors.data(), std::span<double* const>(attribute_out));
+      }
+      else
+      {
+        result.errors += batch.evaluate(std::span<const double* const>(inputs), count,
+          values.data(), errors.data(), std::span<double* const>(attribute_out));
+        result.instructions += count * tape->code.size();
+      }
       for (std::size_t p = 0; p < count; ++p)
       {
         failed[p] = errors[p] != 0 || std::isnan(values[p]) ? 1 : 0;
@@ -331,6 +353,10 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
         result.cancelled = true;
         break;
       }
+    }
+    if (tiled)
+    {
+      result.instructions += tiled->instructions();
     }
   }
   catch (const std::bad_alloc&)

@@ -68,6 +68,10 @@ struct SampleOptions
   /// dF/dinput_k per sample (exact, forward mode: GradientEvaluator).
   bool gradients = false;
   FailurePolicy failures = FailurePolicy::NaN;
+  /// Evaluate tile by tile with the tape simplified for each tile's box (Eval/tape_simplifier.h:
+  /// min/max, selects and checks the box decides). The values are the same bit for bit; off is
+  /// for tests and measurements.
+  bool simplify = true;
   /// Grids (the whole grid, not the part) with more samples are refused before anything is
   /// allocated or evaluated.
   double max_samples = max_grid_samples;
@@ -107,6 +111,7 @@ struct SampleResult
   std::uint32_t first_error = 0;        ///< its error id (tape.errors[id - 1]); 0 = NaN only
   std::vector<double> first_failed_at;  ///< its position
   int threads = 0;                      ///< threads that evaluated
+  std::size_t instructions = 0;         ///< tape instructions run (simplified tapes are shorter)
   bool ok() const { return error.empty() && !cancelled; }
 };
 

@@ -270,5 +270,20 @@ run "slice unknown format" 1 "$frepkit" slice "$h5" --fix x3=0,x4=0,x5=0 -o x.gi
 expect_in "slice formats listed" "$err" ".png"
 expect_true "no temporary files left after slice" no_temporaries
 
+# --- .vm tapes (the Prospero Challenge's format) wherever a .hf is read
+vm="$source_dir/Examples/vm/two-discs.vm"
+run "check a .vm tape" 0 "$frepkit" check "$vm"
+expect_in ".vm is one 2-D object" "$out" "my_model(x[2], a[1], s[1])"
+printf -- '-1 0\n0.25 0\n' > vm-points.txt
+run "eval a .vm tape" 0 "$frepkit" eval "$vm" --points vm-points.txt
+expect_in ".vm sign flipped: 1 inside at a disc's centre" "$out" "$(printf '1\n-0.25')"
+if [ "$vtk" = vtk ]; then
+  run "slice a .vm tape to a contour" 0 "$frepkit" slice "$vm" --box -3,-2,3,2 --grid 120,80 -o discs.vtp -q
+  expect_true ".vm contour has lines" grep -q 'NumberOfLines="[1-9]' discs.vtp
+fi
+printf '_0 var-x\n_1 cube _0\n' > bad.vm
+run "a bad .vm tape is refused" 1 "$frepkit" check bad.vm
+expect_in ".vm error names file:line:col" "$err" "bad.vm:2:4: error: unknown opcode 'cube'"
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

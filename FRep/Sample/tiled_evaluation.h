@@ -1,0 +1,71 @@
+// Internal to the grid sampler: one block of samples evaluated tile by tile, each tile with the
+// tape simplified for the box of its samples (Eval/tape_simplifier.h), hierarchically: the block,
+// then squares of (4 tile)^2 samples (the parallel tasks), halved down to tiles of tile^2
+// samples, each level simplifying its parent's tape. The values, errors and attributes
+// are the full tape's bit for bit (that is the simplifier's guarantee); only the work changes.
+// A tile's box is the exact bounding box of its samples' coordinates, so it encloses them
+// whatever the grid's positions are.
+#pragma once
+
+#include "Compiler/tape.h"
+#include "Eval/batch_evaluator.h"
+#include "Eval/interval_evaluator.h"
+#include "Eval/tape_simplifier.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace frep
+{
+
+class ThreadPool;
+
+namespace sample
+{
+
+/// A run of consecutive samples of a block along axis 0 (a row or a part of one). Along a run,
+/// input 0 does not decrease and the other inputs are constant (grid positions are).
+struct SampleRun
+{
+  std::size_t first = 0;   ///< index in the block
+  std::size_t count = 0;
+  std::int64_t column = 0; ///< axis-0 index of the first sample
+};
+
+class TiledEvaluator
+{
+public:
+  /// `tile` samples per tile side (>= 1). Bands run on the pool's participants.
+  TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool, int tile = 16);
+  ~TiledEvaluator();
+  TiledEvaluator(const TiledEvaluator&) = delete;
+  TiledEvaluator& operator=(const TiledEvaluator&) = delete;
+
+  /// BatchEvaluator::evaluate's contract for the `count` samples of a block whose rows are
+  /// `runs` (in order, covering [0, count)). Returns the number of samples that raised an error.
+  std::size_t evaluate(std::span<const double* const> inputs, std::span<const SampleRun> runs,
+    std::size_t count, double* values, std::uint32_t* errors, std::span<double* const> attributes);
+
+  /// Tape instructions run for the samples so far (each sample counts its tape's length).
+  std::size_t instructions() const { return instructions_; }
+
+private:
+  struct Worker;
+  struct Task;
+
+  std::shared_ptr<const Tape> tape_;
+  std::shared_ptr<ThreadPool> pool_;
+  int tile_;
+  IntervalEvaluator block_interval_;
+  TapeSimplifier block_simplifier_;
+  std::vector<Choice> block_choices_;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::unique_ptr<Worker> top_; // the caller's scratch for the serial top of the quadtree
+  std::size_t instructions_ = 0;
+};
+
+} // namespace sample
+} // namespace frep

@@ -96,15 +96,10 @@ def make_cases(frepkit, source, shared, work):
             if i < 100000:
                 q.write(line)
     robot = os.path.join(examples, "homotopic", "robot.hf")
-    shared_model = os.path.join(shared, "hyperfun", "models", "y7goto__hfa")
-    hfp_model = robot
-    for root, _, names in os.walk(shared_model):
-        for name in sorted(names):
-            if name.endswith(".hf"):
-                hfp_model = os.path.join(root, name)
-                break
-        if hfp_model != robot:
-            break
+    # hfp on a model of the shared HyperFun collection (a torus united with a piriform).
+    hfp_model = os.path.join(shared, "hyperfun", "models", "y7goto__hfa", "HFMain_defaultHFCode.hf")
+    if not os.path.isfile(hfp_model):
+        sys.exit(f"missing {hfp_model} (../shared)")
     ball = os.path.join(work, "morph4d.hf")
     shutil.copy(os.path.join(examples, "mapping", "morph4d.hf"), ball)
     mapping = os.path.join(work, "small.json")

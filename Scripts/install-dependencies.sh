@@ -27,6 +27,9 @@ packages=(
   # find the binaries whose libraries become the package's Depends
   dpkg-dev file
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # the durable-write test traces fsync/rename (Testing/Apps/frepkit_durable_writes_test.sh);
+  # FRepStudio's leak check preloads gcc's LeakSanitizer runtime (liblsan.so.0)
+  strace liblsan0
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -1,12 +1,13 @@
 #include "AnimationExport.h"
 
+#include "DurableSave.h"
+
 #include "Plan/mapping_json.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -73,10 +74,10 @@ bool AnimationExport::start(const QString& model_text,
   }
   auto write = [&](const QString& name, const QByteArray& bytes)
   {
-    QSaveFile file(QDir(work).filePath(name));
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+    const QString path = QDir(work).filePath(name);
+    if (const QString problem = saveDurably(path, bytes); !problem.isEmpty())
     {
-      *error = tr("cannot write %1").arg(file.fileName());
+      *error = tr("cannot write %1: %2").arg(path, problem);
       return false;
     }
     return true;

@@ -1,5 +1,7 @@
 #include "MappingEditor.h"
 
+#include "DurableSave.h"
+
 #include "ExamplesDirectory.h"
 
 #include <QComboBox>
@@ -10,7 +12,6 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -210,11 +211,10 @@ bool MappingEditor::loadFile(const QString& path)
 
 bool MappingEditor::saveFile(const QString& path)
 {
-  QSaveFile out(path);
   const QByteArray text = QByteArray::fromStdString(frep::mapping::save_mapping(spec_));
-  if (!out.open(QIODevice::WriteOnly) || out.write(text) != text.size() || !out.commit())
+  if (const QString problem = saveDurably(path, text); !problem.isEmpty())
   {
-    status_->setText(tr("Cannot save %1: %2").arg(path, out.errorString()));
+    status_->setText(tr("Cannot save %1: %2").arg(path, problem));
     return false;
   }
   status_->setText(tr("Saved %1").arg(path));

@@ -1,5 +1,6 @@
 #include "ScreenshotCapture.h"
 
+#include "DurableSave.h"
 #include "SectionView.h"
 #include "StudioMainWindow.h"
 
@@ -76,8 +77,8 @@ QString write_screenshot(StudioMainWindow& window, const QString& path, int time
   const QImage picture = capture_window(window);
   if (non_black_fraction(picture) < 0.5)
     return QStringLiteral("the window grab is black");
-  if (!picture.save(path))
-    return QStringLiteral("cannot write %1").arg(path);
+  if (const QString problem = saveImageDurably(path, picture); !problem.isEmpty())
+    return QStringLiteral("cannot write %1: %2").arg(path, problem);
   return {};
 }
 

@@ -1,6 +1,7 @@
 #include "StudioMainWindow.h"
 
 #include "AnimationExport.h"
+#include "DurableSave.h"
 
 #include "CoordinatePanel.h"
 #include "ExamplesDirectory.h"
@@ -25,7 +26,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -484,14 +484,11 @@ bool StudioMainWindow::maybeSave()
 
 bool StudioMainWindow::saveTo(const QString& path)
 {
-  // QSaveFile writes a temporary file and renames it on commit: a failed save never truncates
-  // the model on disk.
-  QSaveFile out(path);
-  if (!out.open(QIODevice::WriteOnly) || out.write(editor_->toPlainText().toUtf8()) < 0 ||
-    !out.commit())
+  // Written beside the target and renamed when complete and synced: a failed save never
+  // truncates the model on disk, a crash after "saved" does not lose it.
+  if (const QString problem = saveDurably(path, editor_->toPlainText().toUtf8()); !problem.isEmpty())
   {
-    QMessageBox::critical(this, tr("FRepStudio"),
-      tr("Cannot save %1: %2").arg(path, out.errorString()));
+    QMessageBox::critical(this, tr("FRepStudio"), tr("Cannot save %1: %2").arg(path, problem));
     return false;
   }
   file_ = QFileInfo(path).absoluteFilePath();

@@ -1,5 +1,6 @@
 #include "atomic_output.h"
 
+#include "interrupt_guard.h"
 #include "user_error.h"
 
 #include "Media/durable_file.h"
@@ -53,6 +54,10 @@ void AtomicOutput::commit()
   {
     throw UserError(path_ + ": cannot write the output file");
   }
+  // After SIGINT/SIGTERM nothing more is put in place: the old file stays, the destructor
+  // removes the temporary. (Data written after the signal may also be short: an EINTR on a
+  // pipe read looks like the end of the input.)
+  InterruptGuard::throw_if_interrupted();
   // The data on disk before the file gets its name, the name on disk before we report success.
   if (const std::string problem = frep::media::durable_rename(temporary_, path_); !problem.empty())
   {

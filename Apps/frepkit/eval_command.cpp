@@ -4,6 +4,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Semantics/interpreter.h"
 #include "atomic_output.h"
+#include "interrupt_guard.h"
 #include "model_loading.h"
 #include "number_format.h"
 #include "points_reader.h"
@@ -260,6 +261,7 @@ int run_eval(const EvalOptions& options)
   std::vector<std::vector<double>> columns;
   while (const std::size_t count = reader.read(kChunkPoints, columns))
   {
+    InterruptGuard::throw_if_interrupted(); // a long points file stops between chunks
     run.evaluate_chunk(columns, count, output.stream());
   }
   output.commit();

@@ -162,7 +162,7 @@ int run_cli_layers(const HfpArguments& a,
       layer_count > 0 ? static_cast<double>(i + 1) / static_cast<double>(layer_count) : 1.0);
     if (InterruptGuard::interrupted())
     {
-      throw UserError("cancelled (interrupted); no output written");
+      throw Interrupted();
     }
   }
   bar.finish();

@@ -5,12 +5,12 @@ namespace frepkit
 namespace
 {
 
-volatile std::sig_atomic_t g_interrupted = 0;
-int g_depth = 0; // nested guards (a CLI run around per-layer extractions) install once
+volatile std::sig_atomic_t g_interrupted = 0; // the signal's number, 0 before one arrives
+int g_depth = 0; // nested guards (main's around a command's own) install once
 
-void on_interrupt(int)
+void on_interrupt(int signal)
 {
-  g_interrupted = 1;
+  g_interrupted = signal;
 }
 
 } // namespace
@@ -45,6 +45,19 @@ InterruptGuard::~InterruptGuard()
 bool InterruptGuard::interrupted()
 {
   return g_interrupted != 0;
+}
+
+int InterruptGuard::signal_number()
+{
+  return g_interrupted;
+}
+
+void InterruptGuard::throw_if_interrupted()
+{
+  if (interrupted())
+  {
+    throw Interrupted();
+  }
 }
 
 } // namespace frepkit

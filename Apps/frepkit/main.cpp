@@ -1,8 +1,10 @@
-// frepkit: FRepKit's command-line tool. Exit codes: 0 ok, 1 user error, 2 internal error.
+// frepkit: FRepKit's command-line tool. Exit codes: 0 ok, 1 user error, 2 internal error,
+// 128 + the signal (130 SIGINT, 143 SIGTERM) when a signal stopped the run.
 #include "check_command.h"
 #include "eval_command.h"
 #include "hfp_command.h"
 #include "demo_command.h"
+#include "interrupt_guard.h"
 #include "map_command.h"
 #include "mesh_command.h"
 #include "slice_command.h"
@@ -13,15 +15,33 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace
 {
 
-/// Runs a command; a UserError is one message and exit code 1, anything else exit code 2.
+/// " (address-space limit N MB)" when ulimit -v set one, else nothing.
+std::string address_space_limit()
+{
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+  {
+    return {};
+  }
+  return " (address-space limit " + std::to_string(limit.rlim_cur >> 20) + " MB)";
+}
+
+/// Runs a command under one InterruptGuard, so that a signal at any moment of any subcommand,
+/// its writes included, ends in a clean exit; a UserError is one message and exit code 1, an
+/// interruption exit code 128 + the signal, anything else exit code 2. A command that finished
+/// before it noticed a signal has written everything: its exit code stands.
 int guarded(const std::function<int()>& command)
 {
+  frepkit::InterruptGuard interrupt;
   try
   {
     return command();
@@ -34,6 +54,21 @@ int guarded(const std::function<int()>& command)
       message.pop_back();
     }
     std::cerr << "frepkit: " << message << '\n';
+    // Also a failure that the signal caused (ffmpeg stopped by the same Ctrl-C, a read cut
+    // short by EINTR) is reported as the interruption it is.
+    if (frepkit::InterruptGuard::interrupted())
+    {
+      return 128 + frepkit::InterruptGuard::signal_number();
+    }
+    return 1;
+  }
+  catch (const std::bad_alloc&)
+  {
+    // A request larger than the memory this process may use (ulimit -v, the machine's): a
+    // refusal like a refused size, not a bug. The unwinding removed the temporaries.
+    std::cerr << "frepkit: out of memory: the request needs more memory than this process may "
+                 "use"
+              << address_space_limit() << "; nothing written (try a smaller grid or size)\n";
     return 1;
   }
   catch (const std::exception& e)

@@ -57,8 +57,7 @@ int run_map(const MapOptions& options)
   const MapInputs in = load_inputs(options);
   const MapProducts products = choose_products(options, in.plan);
   const MapOutput out = prepare_output(options);
-  // From here on Ctrl-C / SIGTERM cancels: finished files are kept, temporaries removed.
-  InterruptGuard interrupt;
+  // Ctrl-C / SIGTERM (main()'s guard) cancels: finished files are kept, temporaries removed.
   MapWorkers workers(in, products, out.workers, options.quiet);
   MapRecord record;
   if (products.spreadsheet)
@@ -80,12 +79,16 @@ int run_map(const MapOptions& options)
     render_frames(options, in, workers, frames, record);
   }
   const fs::path wav = out.directory / (out.stem + ".wav");
+  // The sound and the movie are renamed into place by the Media library, which knows nothing of
+  // signals: none is started after one.
   if (products.audio)
   {
+    InterruptGuard::throw_if_interrupted();
     write_sound(in, wav, record);
   }
   if (products.movie)
   {
+    InterruptGuard::throw_if_interrupted();
     const fs::path movie = out.directory / (out.stem + ".mp4");
     encode_movie(in, workers, frames, products.audio ? &wav : nullptr, movie, record);
   }

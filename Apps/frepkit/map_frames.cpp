@@ -30,6 +30,23 @@ std::string fingerprint(const std::string& model_text,
   return hex;
 }
 
+// Frames rendered with another fingerprint must not survive an interrupted run: they would be
+// trusted under the new one when the run is resumed. The old fingerprint goes first, so that a
+// run stopped during the removal leaves no key at all (the next run renders every frame).
+void remove_stale_frames(const fs::path& directory, const fs::path& key_file)
+{
+  std::error_code ec;
+  fs::remove(key_file, ec);
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, ec))
+  {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("frame_") && name.ends_with(".png"))
+    {
+      fs::remove(entry.path(), ec);
+    }
+  }
+}
+
 // Creates the frames' directory and writes this run's fingerprint there; true when the frames
 // on disk were rendered with the same one (and --force is not given), so they can be kept.
 bool prepare_resume(const MapOptions& options, const MapInputs& in, const FrameFiles& frames)
@@ -42,13 +59,16 @@ bool prepare_resume(const MapOptions& options, const MapInputs& in, const FrameF
   }
   const std::string key = fingerprint(read_file(options.model, "model"), in.mapping_text, options);
   const fs::path key_file = frames.directory / ".fingerprint";
-  bool resume = false;
-  if (!options.force && fs::exists(key_file))
+  std::string old;
+  if (std::ifstream old_file(key_file); old_file)
   {
-    std::ifstream old_file(key_file);
-    std::string old;
     std::getline(old_file, old);
-    resume = old == key;
+  }
+  // --force renders every frame again; frames of the same fingerprint may stay meanwhile.
+  const bool resume = !options.force && old == key;
+  if (old != key)
+  {
+    remove_stale_frames(frames.directory, key_file);
   }
   write_text_file(key_file, key + "\n");
   return resume;

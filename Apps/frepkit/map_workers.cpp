@@ -111,7 +111,7 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
     mapping::make_section(*inputs_.model, inputs_.parameters, inputs_.plan, sample, so);
   if (section.cancelled || InterruptGuard::interrupted())
   {
-    throw UserError("interrupted; the files written so far are kept (run again to resume)");
+    throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
   }
   if (!section.error.empty())
   {
@@ -168,7 +168,7 @@ void MapWorkers::parallel(std::size_t count, const std::function<void(std::size_
   }
   if (InterruptGuard::interrupted())
   {
-    throw UserError("interrupted; the files written so far are kept (run again to resume)");
+    throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
   }
 }
 

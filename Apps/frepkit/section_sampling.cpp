@@ -71,7 +71,7 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
     });
   if (result.cancelled)
   {
-    throw UserError("cancelled (interrupted); no output written");
+    throw Interrupted();
   }
   if (!result.ok())
   {

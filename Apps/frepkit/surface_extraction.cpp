@@ -31,7 +31,7 @@ frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
   }
   if (result.cancelled || InterruptGuard::interrupted())
   {
-    throw UserError("cancelled (interrupted); no output written");
+    throw Interrupted();
   }
   return result;
 }

@@ -2,7 +2,6 @@
 #   P/bin/frepkit, P/bin/FRepStudio            RUNPATH $ORIGIN/../lib
 #   P/bin/paraview.conf                        the plugins XMLs the ParaView GUI in P/bin reads
 #   P/lib/libFRepKit<Name>.so.<version>        the plain libraries and the VTK modules
-#   P/lib/libfrepkit_png.so                    frepkit's dlopened PNG encoder (<bin>/../lib)
 #   P/lib/paraview-5.11/plugins/FRepKit/       the ParaView plug-in, frepkit.plugins.xml beside it
 #   P/lib/<multiarch>/paraview-5.11/plugins/   links to it: where Debian's ParaView looks
 #   P/include/frepkit/                         the public headers only
@@ -10,8 +9,8 @@
 #   P/share/frepkit/examples/                  the models and mappings (frepkit demo finds them)
 #   P/share/doc/frepkit/                       README.md and Documentation/
 #   P/share/applications, share/icons          FRepStudio's desktop entry and icon
-# Installed programs find their data relative to themselves (<bin>/../share/frepkit/examples,
-# <bin>/../lib/libfrepkit_png.so); nothing installed names the build or source tree (checked by
+# Installed programs find their data relative to themselves (<bin>/../share/frepkit/examples);
+# nothing installed names the build or source tree (checked by
 # ctest -R Install.Prefix).
 include(CMakePackageConfigHelpers)
 
@@ -28,9 +27,6 @@ endif()
 
 # --- Programs ----------------------------------------------------------------------------------
 install(TARGETS frepkit RUNTIME DESTINATION bin)
-if(TARGET frepkit_png)
-  install(TARGETS frepkit_png LIBRARY DESTINATION lib)
-endif()
 if(TARGET FRepStudio)
   install(TARGETS FRepStudio RUNTIME DESTINATION bin)
   install(FILES Apps/FRepStudio/Desktop/frepstudio.desktop DESTINATION share/applications)

@@ -20,7 +20,7 @@ echo "installed $(find "$prefix" -type f | wc -l) files into $prefix"
 
 # The tree a user gets.
 for f in bin/frepkit bin/FRepStudio lib/libFRepKitEngine.so.0 lib/libFRepKitSources.so.0 \
-  lib/libfrepkit_png.so lib/cmake/frepkit/FRepKitConfig.cmake \
+  lib/cmake/frepkit/FRepKitConfig.cmake \
   lib/cmake/frepkit/FRepKitConfigVersion.cmake lib/cmake/frepkit/FRepKit-targets.cmake \
   lib/cmake/frepkit/FRepKit-vtk-module-properties.cmake \
   lib/paraview-5.11/plugins/FRepKit/FRepKit.so lib/paraview-5.11/plugins/frepkit.plugins.xml \
@@ -89,7 +89,7 @@ model="$prefix/share/frepkit/examples/homotopy5d.hf"
 echo "0.5 0.5 0.5 0.5 0.25" | env -u LD_LIBRARY_PATH "$prefix/bin/frepkit" eval "$model" ||
   fail "installed frepkit eval"
 env -u LD_LIBRARY_PATH "$prefix/bin/frepkit" slice "$model" --fix x3=0,x4=0.5,x5=0.5 \
-  -o "$work/section.png" || fail "installed frepkit slice -> PNG (libfrepkit_png.so)"
+  -o "$work/section.png" || fail "installed frepkit slice -> PNG"
 [ -s "$work/section.png" ] || fail "no section.png"
 # demo finds <prefix>/share/frepkit/examples by itself (a small run: 2 frames).
 env -u LD_LIBRARY_PATH "$prefix/bin/frepkit" demo homotopic -O "$work/demo" --frames 2 \

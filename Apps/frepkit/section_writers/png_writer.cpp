@@ -1,11 +1,12 @@
+// PNG with libpng, in the process. (It was OpenImageIO in a dlopened module: its start-up, which
+// loads every image-format library it has, cost about 0.45 s per run that wrote a picture, more
+// than sampling a 1024^2 image; libpng is one small library and the encoder is the same zlib.)
 #include "png_writer.h"
 
-#include "user_error.h"
+#include <png.h>
 
-#include <dlfcn.h>
-#include <unistd.h>
-
-#include <climits>
+#include <csetjmp>
+#include <stdexcept>
 #include <string>
 
 namespace frepkit
@@ -13,47 +14,68 @@ namespace frepkit
 namespace
 {
 
-using EncodePng = int (*)(std::int64_t, std::int64_t, const std::uint8_t*,
-  void (*)(void*, const char*, std::size_t), void*, char*, std::size_t);
-
-/// The encoder module next to the tool: <bin>/../lib/libfrepkit_png.so, else the loader's
-/// search path.
-EncodePng load_encoder()
+struct Sink
 {
-  static EncodePng encode = nullptr;
-  if (encode)
-  {
-    return encode;
-  }
-  std::string module = FREPKIT_PNG_MODULE;
-  char executable[PATH_MAX];
-  const ssize_t length = ::readlink("/proc/self/exe", executable, sizeof executable - 1);
-  void* handle = nullptr;
-  if (length > 0)
-  {
-    std::string directory(executable, static_cast<std::size_t>(length));
-    directory.erase(directory.find_last_of('/'));
-    handle = ::dlopen((directory + "/../lib/" + module).c_str(), RTLD_NOW | RTLD_LOCAL);
-  }
-  if (!handle)
-  {
-    handle = ::dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
-  }
-  if (!handle)
-  {
-    throw UserError("PNG output needs " + module + ", which could not be loaded: " + ::dlerror());
-  }
-  encode = reinterpret_cast<EncodePng>(::dlsym(handle, "frepkit_encode_png"));
-  if (!encode)
-  {
-    throw UserError(module + " has no frepkit_encode_png");
-  }
-  return encode;
+  std::ostream* out = nullptr;
+  bool failed = false;
+  char message[256] = "";
+};
+
+void write_bytes(png_structp png, png_bytep data, png_size_t length)
+{
+  auto* sink = static_cast<Sink*>(png_get_io_ptr(png));
+  sink->out->write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(length));
+  sink->failed = sink->failed || !*sink->out;
 }
 
-void append_to_stream(void* context, const char* bytes, std::size_t count)
+void flush_bytes(png_structp png)
 {
-  static_cast<std::ostream*>(context)->write(bytes, static_cast<std::streamsize>(count));
+  static_cast<Sink*>(png_get_io_ptr(png))->out->flush();
+}
+
+void on_error(png_structp png, png_const_charp message)
+{
+  auto* sink = static_cast<Sink*>(png_get_error_ptr(png));
+  std::snprintf(sink->message, sizeof sink->message, "%s", message);
+  png_longjmp(png, 1);
+}
+
+void on_warning(png_structp, png_const_charp) {}
+
+/// The libpng calls, in a function with only trivial locals (libpng reports errors by longjmp).
+bool encode(Sink& sink, std::int64_t width, std::int64_t height, const std::uint8_t* rgb)
+{
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, on_error, on_warning);
+  if (!png)
+  {
+    std::snprintf(sink.message, sizeof sink.message, "libpng could not start");
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png)))
+  {
+    png_destroy_write_struct(&png, info ? &info : nullptr);
+    return false;
+  }
+  png_set_write_fn(png, &sink, write_bytes, flush_bytes);
+  // zlib level 3 instead of 6: frames are large flat areas; 30% less encoding time for files 20%
+  // larger (measured on the demo's frames with the earlier encoder, the same zlib).
+  png_set_compression_level(png, 3);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+    PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_text software{};
+  software.compression = PNG_TEXT_COMPRESSION_NONE;
+  software.key = const_cast<png_charp>("Software");
+  software.text = const_cast<png_charp>("frepkit");
+  png_set_text(png, info, &software, 1);
+  png_write_info(png, info);
+  for (std::int64_t y = 0; y < height; ++y)
+  {
+    png_write_row(png, const_cast<png_bytep>(rgb + y * width * 3));
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
 }
 
 } // namespace
@@ -61,10 +83,20 @@ void append_to_stream(void* context, const char* bytes, std::size_t count)
 void write_png(std::ostream& out, std::int64_t width, std::int64_t height,
   const std::vector<std::uint8_t>& rgb)
 {
-  char error[512] = "";
-  if (load_encoder()(width, height, rgb.data(), append_to_stream, &out, error, sizeof error) != 0)
+  if (width <= 0 || height <= 0 || width > 0x7fffffff || height > 0x7fffffff ||
+    rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
   {
-    throw std::runtime_error(error);
+    throw std::runtime_error("PNG: the picture's size does not match its pixels");
+  }
+  Sink sink;
+  sink.out = &out;
+  if (!encode(sink, width, height, rgb.data()))
+  {
+    throw std::runtime_error(std::string("libpng could not encode the PNG: ") + sink.message);
+  }
+  if (sink.failed)
+  {
+    throw std::runtime_error("PNG: writing the file failed");
   }
 }
 

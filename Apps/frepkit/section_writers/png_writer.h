@@ -1,5 +1,5 @@
-// PNG through OpenImageIO, written into the caller's stream (a temporary file renamed when
-// complete). Builds without the stack (FREPKIT_ENABLE_VTK off) report it as not available.
+// PNG through libpng, written into the caller's stream (a temporary file renamed when complete).
+// Builds without libpng report it as not available.
 #pragma once
 
 #include <cstdint>

@@ -11,8 +11,10 @@
 namespace frepkit
 {
 
-LoadedProgram load_program(const std::string& path)
+LoadedProgram load_program(const std::string& path, const UserInputs& inputs)
 {
+  frep::ParseOptions parse_options;
+  parse_options.user_functions = load_user_inputs(inputs);
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
@@ -23,7 +25,7 @@ LoadedProgram load_program(const std::string& path)
   {
     throw UserError(path + ": cannot read the model file");
   }
-  frep::ParseResult parsed = frep::parse_program(text, path);
+  frep::ParseResult parsed = frep::parse_program(text, path, parse_options);
   return LoadedProgram{ path, parsed.program, std::move(parsed.diagnostics) };
 }
 

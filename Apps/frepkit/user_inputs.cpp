@@ -1,0 +1,37 @@
+#include "user_inputs.h"
+
+#include "Language/user_library.h"
+#include "user_error.h"
+
+#include <CLI/CLI.hpp>
+
+namespace frepkit
+{
+
+void add_user_input_options(CLI::App* command, UserInputs& inputs)
+{
+  command->add_option("--library", inputs.libraries,
+    "A user library (shared object implementing frepkit_user.h) whose functions the model may "
+    "call by name; repeatable")
+    ->allow_extra_args(false);
+}
+
+std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs)
+{
+  if (inputs.libraries.empty())
+  {
+    return nullptr;
+  }
+  auto registry = std::make_shared<frep::UserFunctionRegistry>();
+  for (const std::string& path : inputs.libraries)
+  {
+    const frep::UserLibraryResult r = frep::load_user_library(path, *registry);
+    if (!r.ok())
+    {
+      throw UserError(r.error);
+    }
+  }
+  return registry;
+}
+
+} // namespace frepkit

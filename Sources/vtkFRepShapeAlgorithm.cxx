@@ -4,6 +4,7 @@
 #include "vtkFRepObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
 
 #include "Compiler/model.h"
 #include "Language/parser.h"
@@ -11,10 +12,21 @@
 
 #include <cmath>
 
+vtkStandardNewMacro(vtkFRepShapeAlgorithm);
+
 //------------------------------------------------------------------------------
 vtkFRepShapeAlgorithm::vtkFRepShapeAlgorithm()
 {
+  this->SetNumberOfInputPorts(0);
   this->SetFunctionName("shape");
+}
+
+//------------------------------------------------------------------------------
+bool vtkFRepShapeAlgorithm::MakeFunction(vtkInformationVector**, frep::UserFunction&, double*, bool&)
+{
+  vtkErrorMacro(<< "vtkFRepShapeAlgorithm makes no function itself: use vtkPolyDataToFRep, "
+                   "vtkImageDataToFRep or vtkImplicitFunctionToFRep");
+  return false;
 }
 
 //------------------------------------------------------------------------------

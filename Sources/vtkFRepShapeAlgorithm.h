@@ -30,6 +30,8 @@
 class FREPKITSOURCES_EXPORT vtkFRepShapeAlgorithm : public vtkFRepObjectAlgorithm
 {
 public:
+  /** The superclass alone makes no function (an error on update): use a subclass. */
+  static vtkFRepShapeAlgorithm* New();
   vtkTypeMacro(vtkFRepShapeAlgorithm, vtkFRepObjectAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
@@ -67,10 +69,11 @@ protected:
 #ifndef __VTK_WRAP__
   /**
    * The function from the inputs, and the data's bounds (xmin, xmax, ...; false when unknown).
-   * Returns false after reporting an error (the output is then empty).
+   * Returns false after reporting an error (the output is then empty). The superclass's reports
+   * that it makes none.
    */
   virtual bool MakeFunction(vtkInformationVector** inputVector, frep::UserFunction& function,
-    double dataBounds[6], bool& haveBounds) = 0;
+    double dataBounds[6], bool& haveBounds);
   /** The data's bounds from information alone (RequestInformation); false when unknown. */
   virtual bool InformationBounds(vtkInformationVector** inputVector, double dataBounds[6]);
 #endif

@@ -1,0 +1,43 @@
+"""The HyperFun Reader's UserLibraries property: a .hf model that calls the example user
+library's ring(x, R, r) (Examples/user-library) reads and meshes once the library is listed; a
+library that does not exist is an error naming it, with empty outputs and no crash. pvpython, no
+rendering."""
+
+import os
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from frepkit_test_support import CapturedMessages, Checker, arguments  # noqa: E402
+
+from paraview.simple import *  # noqa: E402,F401,F403
+
+plugin, source_dir, rest = arguments()
+library = rest[0]
+LoadPlugin(plugin, remote=False, ns=globals())
+t = Checker("TestPluginUserLibrary")
+messages = CapturedMessages()
+
+model = os.path.join(source_dir, "Examples", "user-library", "ring.hf")
+# The library first: a reader given its file at once parses it before the library is listed.
+reader = HyperFunReader(UserLibraries=[library])
+messages.clear()
+reader.FileName = model
+reader.UpdatePipeline()
+t.check(messages.text().count("ERROR") == 0, "no error with the library: %r" % messages.text())
+cells = reader.GetDataInformation(1).GetNumberOfCells()
+t.check(cells > 100, "the ring and ball are meshed (%d cells)" % cells)
+b = reader.GetDataInformation(1).GetBounds()
+t.check(abs(b[1] - 3.3) < 0.35, "x extends to R + r = 3.3: %s" % (b,))
+
+messages.clear()
+missing = HyperFunReader(UserLibraries=["/nonexistent/libshapes.so"])
+messages.clear()
+missing.FileName = model
+missing.UpdatePipeline()
+text = messages.text()
+t.check("user library /nonexistent/libshapes.so: no such file" in text,
+        "the missing library is named: %r" % text)
+t.check(missing.GetDataInformation(1).GetNumberOfCells() == 0, "empty output")
+if t.report():
+    sys.exit(1)

@@ -1,5 +1,8 @@
 #include "vtkHyperFunSource.h"
 
+#include "Language/user_library.h"
+#include "Shapes/tape_function.h"
+
 #include "vtkFRepInformation.h"
 #include "vtkFRepObject.h"
 #include "vtkInformation.h"
@@ -129,6 +132,51 @@ void vtkHyperFunSource::RemoveAllCoordinateRanges()
 }
 
 //------------------------------------------------------------------------------
+void vtkHyperFunSource::AddUserLibrary(const char* path)
+{
+  this->UserLibraries.emplace_back(path ? path : "");
+  this->UserFunctionTime.Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::RemoveAllUserLibraries()
+{
+  this->UserLibraries.clear();
+  this->UserFunctionTime.Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::AddShape(const char* name, vtkFRepObject* object)
+{
+  if (!name || !object || !object->HasModel())
+  {
+    vtkErrorMacro(<< "AddShape: a name and an object with a model are needed");
+    return;
+  }
+  std::shared_ptr<const frep::Tape> tape = object->GetTape();
+  if (!tape)
+  {
+    vtkErrorMacro(<< "AddShape: the object '" << name << "' has no tape");
+    return;
+  }
+  this->ShapeNames.emplace_back(name);
+  this->ShapeTapes.push_back(std::move(tape));
+  this->UserFunctionTime.Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::RemoveAllShapes()
+{
+  this->ShapeNames.clear();
+  this->ShapeTapes.clear();
+  this->UserFunctionTime.Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 int vtkHyperFunSource::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outInfo)
@@ -213,14 +261,39 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   const std::string objectName = this->ObjectName ? this->ObjectName : "";
 
   if (this->CachedModel && text == this->CachedText && sourceName == this->CachedSourceName &&
-      objectName == this->CachedObjectName)
+      objectName == this->CachedObjectName && this->CachedTime > this->UserFunctionTime)
   {
     return this->CachedModel;
   }
   this->CachedModel.reset();
   this->CachedProgram.reset();
 
-  const frep::ParseResult parsed = frep::parse_program(text, sourceName);
+  frep::ParseOptions parseOptions;
+  if (!this->UserLibraries.empty() || !this->ShapeNames.empty())
+  {
+    auto registry = std::make_shared<frep::UserFunctionRegistry>();
+    for (const std::string& path : this->UserLibraries)
+    {
+      const frep::UserLibraryResult loaded = frep::load_user_library(path, *registry);
+      if (!loaded.ok())
+      {
+        vtkErrorMacro(<< loaded.error);
+        return nullptr;
+      }
+    }
+    for (std::size_t i = 0; i < this->ShapeNames.size(); ++i)
+    {
+      const std::string e =
+        registry->add(frep::shapes::tape_function(this->ShapeNames[i], this->ShapeTapes[i]));
+      if (!e.empty())
+      {
+        vtkErrorMacro(<< "AddShape: " << e);
+        return nullptr;
+      }
+    }
+    parseOptions.user_functions = registry;
+  }
+  const frep::ParseResult parsed = frep::parse_program(text, sourceName, parseOptions);
   this->CachedProgram = parsed.program;
   if (!parsed.ok())
   {
@@ -275,6 +348,7 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   this->CachedText = std::move(text);
   this->CachedSourceName = std::move(sourceName);
   this->CachedObjectName = objectName;
+  this->CachedTime.Modified();
   return this->CachedModel;
 }
 
@@ -314,6 +388,17 @@ void vtkHyperFunSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ModelText: " << (this->ModelText ? this->ModelText : "(none)") << "\n";
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "ObjectName: " << (this->ObjectName ? this->ObjectName : "(none)") << "\n";
+  os << indent << "UserLibraries (" << this->UserLibraries.size() << "):";
+  for (const std::string& path : this->UserLibraries)
+  {
+    os << " " << path;
+  }
+  os << "\n" << indent << "Shapes (" << this->ShapeNames.size() << "):";
+  for (const std::string& name : this->ShapeNames)
+  {
+    os << " " << name;
+  }
+  os << "\n";
   os << indent << "Parameters (" << this->Parameters.size() << "):";
   for (double a : this->Parameters)
   {

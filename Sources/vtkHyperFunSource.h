@@ -48,6 +48,7 @@
 namespace frep
 {
 class Model;
+struct Tape;
 namespace ast
 {
 struct Program;
@@ -119,6 +120,23 @@ public:
   vtkGetVector2Macro(DefaultCoordinateRange, double);
   ///@}
 
+  ///@{
+  /**
+   * User functions the program may call (Documentation/user-functions.md). AddUserLibrary: a
+   * shared library implementing frepkit_user.h (loaded when the model is built; a failure is
+   * an error naming the library and the function). AddShape: the object (e.g. the output of
+   * vtkPolyDataToFRep, or any k-D vtkFRepObject) as the function `name(x)` over its free
+   * coordinates, with its enclosures and gradients; the object is used as it is when added
+   * (call AddShape again after it changes).
+   */
+  void AddUserLibrary(const char* path);
+  void RemoveAllUserLibraries();
+  int GetNumberOfUserLibraries() const { return static_cast<int>(this->UserLibraries.size()); }
+  void AddShape(const char* name, vtkFRepObject* object);
+  void RemoveAllShapes();
+  int GetNumberOfShapes() const { return static_cast<int>(this->ShapeNames.size()); }
+  ///@}
+
 protected:
   /**
    * Defaults: no ModelText, FileName or ObjectName, no parameters, DefaultCoordinateRange
@@ -150,6 +168,9 @@ protected:
   // Per coordinate: has an interval of its own, and the interval.
   std::vector<bool> HasCoordinateRange;
   std::vector<std::array<double, 2>> CoordinateRanges;
+  std::vector<std::string> UserLibraries;
+  std::vector<std::string> ShapeNames;
+  std::vector<std::shared_ptr<const frep::Tape>> ShapeTapes;
 
 private:
   vtkHyperFunSource(const vtkHyperFunSource&) = delete;
@@ -167,6 +188,8 @@ private:
   std::string CachedText;
   std::string CachedSourceName;
   std::string CachedObjectName;
+  vtkTimeStamp UserFunctionTime; // AddShape/AddUserLibrary: the cache is stale
+  vtkTimeStamp CachedTime;
 };
 
 #endif

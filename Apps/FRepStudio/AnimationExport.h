@@ -9,6 +9,7 @@
 
 #include <QObject>
 #include <QProcess>
+#include <QStringList>
 #include <QString>
 #include <QTimer>
 
@@ -33,6 +34,8 @@ public:
     const frep::mapping::Spec& spec,
     const QString& output_directory,
     QString* error);
+  /// User libraries passed on to frepkit map (--library), for models that call their functions.
+  void setUserLibraries(const QStringList& paths) { libraries_ = paths; }
   /// Stops the export (SIGTERM: frepkit keeps the frames it finished and removes temporaries).
   void cancel();
   bool isRunning() const { return process_.state() != QProcess::NotRunning; }
@@ -46,6 +49,7 @@ signals:
   void finished(bool ok, const QString& message);
 
 private:
+  QStringList libraries_;
   void poll();
   void processFinished(int code, QProcess::ExitStatus status);
 

@@ -8,7 +8,7 @@ namespace frepstudio
 {
 
 ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
-  std::uint64_t generation)
+  std::uint64_t generation, std::shared_ptr<const frep::UserFunctionRegistry> users)
 {
   const auto start = std::chrono::steady_clock::now();
   ModelAnalysis analysis;
@@ -16,7 +16,9 @@ ModelAnalysis analyse_model(const std::string& text, const std::string& file_nam
   analysis.file_name = file_name;
   analysis.ranges = CoordinateRanges::from_model_text(text);
 
-  frep::ParseResult parsed = frep::parse_program(text, file_name);
+  frep::ParseOptions options;
+  options.user_functions = std::move(users);
+  frep::ParseResult parsed = frep::parse_program(text, file_name, options);
   analysis.diagnostics = std::move(parsed.diagnostics);
   if (parsed.ok())
   {

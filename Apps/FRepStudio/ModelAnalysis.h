@@ -40,8 +40,9 @@ struct ModelAnalysis
   bool ok() const { return program != nullptr && diagnostics.empty(); }
 };
 
-/// Parses `text` and compiles every object.
+/// Parses `text` and compiles every object; `users`: the user functions it may call
+/// (--library, Documentation/user-functions.md), or null.
 ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
-  std::uint64_t generation);
+  std::uint64_t generation, std::shared_ptr<const frep::UserFunctionRegistry> users = nullptr);
 
 } // namespace frepstudio

@@ -2,6 +2,7 @@
 
 #include "AnimationExport.h"
 #include "DurableSave.h"
+#include "Language/user_library.h"
 
 #include "CoordinatePanel.h"
 #include "ExamplesDirectory.h"
@@ -325,8 +326,8 @@ void StudioMainWindow::startAnalysis()
     if (result.generation == analysis_generation_)
       applyAnalysis(std::move(result));
   });
-  watcher->setFuture(QtConcurrent::run(
-    [text, name, generation] { return analyse_model(text, name, generation); }));
+  watcher->setFuture(QtConcurrent::run([text, name, generation, users = users_]
+    { return analyse_model(text, name, generation, users); }));
 }
 
 void StudioMainWindow::applyAnalysis(ModelAnalysis analysis)
@@ -548,6 +549,26 @@ void StudioMainWindow::closeEvent(QCloseEvent* event)
     event->ignore();
 }
 
+bool StudioMainWindow::setUserLibraries(const QStringList& paths, QString* error)
+{
+  auto registry = std::make_shared<frep::UserFunctionRegistry>();
+  for (const QString& path : paths)
+  {
+    const frep::UserLibraryResult r = frep::load_user_library(path.toStdString(), *registry);
+    if (!r.ok())
+    {
+      if (error)
+        *error = QString::fromStdString(r.error);
+      return false;
+    }
+  }
+  users_ = paths.isEmpty() ? nullptr : std::move(registry);
+  userLibraries_.clear();
+  for (const QString& path : paths)
+    userLibraries_ << QFileInfo(path).absoluteFilePath(); // the export runs elsewhere
+  return true;
+}
+
 AnimationExport* StudioMainWindow::exportAnimation(const QString& directory, QString* error)
 {
   frep::mapping::Spec spec = mapping_->spec();
@@ -556,6 +577,7 @@ AnimationExport* StudioMainWindow::exportAnimation(const QString& directory, QSt
     spec.animation.path = path_->path();
   }
   auto* job = new AnimationExport(this);
+  job->setUserLibraries(userLibraries_);
   const QString object = QString::fromStdString(panel_->currentObject());
   if (!job->start(editor_->toPlainText(), object, spec, directory, error))
   {

@@ -46,6 +46,10 @@ public:
 
   /// Opens a model file (no unsaved-changes prompt: see openFile()). False when unreadable.
   bool loadFile(const QString& path);
+  /// Loads user libraries (frepkit_user.h) whose functions models may call; they are also
+  /// passed to the animation export. False and `error` (naming the library and the function)
+  /// when one cannot be loaded; nothing changes then.
+  bool setUserLibraries(const QStringList& paths, QString* error);
   /// Replaces the text as an unnamed model.
   void setModelText(const QString& text, const QString& name = QString());
   /// Selects an object now, or when the next analysis lists it.
@@ -92,6 +96,8 @@ protected:
   void closeEvent(QCloseEvent* event) override;
 
 private:
+  std::shared_ptr<const frep::UserFunctionRegistry> users_;
+  QStringList userLibraries_;
   void buildMenus();
   void startAnalysis();
   void applyAnalysis(ModelAnalysis analysis);

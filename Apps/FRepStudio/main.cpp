@@ -43,11 +43,19 @@ int main(int argc, char* argv[])
     "Show the spreadsheet of cross-sections (the screenshot waits for all its cells).");
   const QCommandLineOption mapping("mapping", "Open a mapping file (JSON) in the Mapping tab.",
     "FILE");
-  parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, mapping });
+  const QCommandLineOption library("library",
+    "A user library (frepkit_user.h) whose functions models may call; repeatable.", "FILE");
+  parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, mapping, library });
   parser.addPositionalArgument("model", "The HyperFun file to open.", "[MODEL.hf]");
   parser.process(app);
 
   frepstudio::StudioMainWindow window;
+  QString library_error;
+  if (!window.setUserLibraries(parser.values(library), &library_error))
+  {
+    std::fprintf(stderr, "FRepStudio: %s\n", qPrintable(library_error));
+    return 1;
+  }
   const QStringList sizes = parser.value(size).split('x');
   if (sizes.size() != 2 || sizes[0].toInt() <= 0 || sizes[1].toInt() <= 0)
   {

@@ -18,12 +18,13 @@ CLI::App* add_check_command(CLI::App& app, CheckOptions& options)
   check->add_option("model", options.model, "HyperFun model file (.hf)")->required();
   check->add_option("-o,--object", options.object,
     "Object to mark as selected (case-insensitive); default: my_model, else the first");
+  add_user_input_options(check, options.user);
   return check;
 }
 
 int run_check(const CheckOptions& options)
 {
-  const LoadedProgram loaded = load_program(options.model);
+  const LoadedProgram loaded = load_program(options.model, options.user);
   if (!loaded.program)
   {
     std::cerr << frep::format_diagnostics(loaded.diagnostics);

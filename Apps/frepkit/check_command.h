@@ -1,6 +1,7 @@
 // frepkit check MODEL.hf: parse and check a model, report every diagnostic, list the objects.
 #pragma once
 
+#include "user_inputs.h"
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@ namespace frepkit
 
 struct CheckOptions
 {
+  UserInputs user; ///< --library, --shape
   std::string model;
   std::optional<std::string> object;
 };

@@ -224,12 +224,13 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options)
   eval->add_option("-j,--threads", options.threads,
     "Worker threads for compiled evaluation (0 = all cores)")->capture_default_str()
     ->check(CLI::Range(0, 1024));
+  add_user_input_options(eval, options.user);
   return eval;
 }
 
 int run_eval(const EvalOptions& options)
 {
-  const LoadedProgram loaded = load_program(options.model);
+  const LoadedProgram loaded = load_program(options.model, options.user);
   if (!loaded.program)
   {
     std::cerr << frep::format_diagnostics(loaded.diagnostics);

@@ -1,6 +1,7 @@
 // frepkit eval MODEL.hf: evaluate a model at points read from a file or stdin.
 #pragma once
 
+#include "user_inputs.h"
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@ namespace frepkit
 
 struct EvalOptions
 {
+  UserInputs user; ///< --library, --shape
   std::string model;
   std::optional<std::string> object;
   std::vector<double> parameters;

@@ -47,6 +47,7 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
   cmd->add_option("-j,--threads", o.threads, "worker threads (default: all cores)")
     ->check(CLI::Range(0, 1024));
   cmd->add_flag("-q,--quiet", o.quiet, "no progress bar and no summary");
+  add_user_input_options(cmd, o.user);
   return cmd;
 }
 

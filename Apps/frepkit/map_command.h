@@ -7,6 +7,7 @@
 // renamed when complete.
 #pragma once
 
+#include "user_inputs.h"
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ namespace frepkit
 
 struct MapOptions
 {
+  UserInputs user; ///< --library, --shape
   std::string model;
   std::string mapping;
   std::string output_directory;

@@ -51,7 +51,7 @@ mapping::Spec load_spec(const MapOptions& options, const std::string& mapping_te
 // The object (--object, else the mapping's, else the default), compiled, and its a[] values.
 void load_model(const MapOptions& options, MapInputs& in)
 {
-  const LoadedProgram program = load_program(options.model);
+  const LoadedProgram program = load_program(options.model, options.user);
   require_parsed(program);
   std::optional<std::string> object_name = options.object;
   if (!object_name && !in.spec.object.empty())

@@ -71,6 +71,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
     ->capture_default_str()
     ->check(CLI::Range(0, 1024));
   mesh->add_flag("-q,--quiet", options.quiet, "No progress bar and no report (warnings remain)");
+  add_user_input_options(mesh, options.user);
   return mesh;
 }
 
@@ -78,7 +79,7 @@ int run_mesh(const MeshOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   const MeshFormat format = require_mesh_format(options.output);
-  const LoadedProgram loaded = load_program(options.model);
+  const LoadedProgram loaded = load_program(options.model, options.user);
   require_parsed(loaded);
   const int object_index = choose_object(loaded, options.object);
   const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];

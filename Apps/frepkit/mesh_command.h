@@ -2,6 +2,7 @@
 // triangle mesh in the format of OUT's extension (.stl .obj .ply .wrl .pov .vtp).
 #pragma once
 
+#include "user_inputs.h"
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@ namespace frepkit
 
 struct MeshOptions
 {
+  UserInputs user; ///< --library, --shape
   std::string model;
   std::string output;
   std::optional<std::string> object;

@@ -12,8 +12,10 @@
 namespace frepkit
 {
 
-LoadedProgram load_program(const std::string& path)
+LoadedProgram load_program(const std::string& path, const UserInputs& inputs)
 {
+  frep::ParseOptions parse_options;
+  parse_options.user_functions = load_user_inputs(inputs);
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
@@ -24,9 +26,10 @@ LoadedProgram load_program(const std::string& path)
   {
     throw UserError(path + ": cannot read the model file");
   }
-  // .vm tapes (the Prospero Challenge's format) read as a one-object HyperFun program.
-  frep::ParseResult parsed =
-    frep::is_vm_file(path) ? frep::parse_vm(text, path) : frep::parse_program(text, path);
+  // .vm tapes (the Prospero Challenge's format) read as a one-object HyperFun program (they
+  // call no user function).
+  frep::ParseResult parsed = frep::is_vm_file(path) ? frep::parse_vm(text, path)
+                                                    : frep::parse_program(text, path, parse_options);
   return LoadedProgram{ path, parsed.program, std::move(parsed.diagnostics) };
 }
 

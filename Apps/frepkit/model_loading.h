@@ -4,6 +4,7 @@
 #include "Compiler/model.h"
 #include "Language/ast.h"
 #include "Language/diagnostic.h"
+#include "user_inputs.h"
 
 #include <iosfwd>
 #include <memory>
@@ -22,7 +23,8 @@ struct LoadedProgram
 
 /// Reads `path` as bytes (any content, even binary) and parses it. Throws UserError when the
 /// file cannot be read; parse errors are returned in diagnostics.
-LoadedProgram load_program(const std::string& path);
+/// `inputs`: the user libraries and shapes the model may call (--library, --shape).
+LoadedProgram load_program(const std::string& path, const UserInputs& inputs = {});
 
 /// The object to evaluate: `requested` (case-insensitive), else my_model, else the first object
 /// (the original's rule). A requested name that does not exist is a UserError listing the

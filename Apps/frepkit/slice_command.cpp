@@ -155,13 +155,14 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
     ->capture_default_str()
     ->check(CLI::Range(0, 1024));
   slice->add_flag("-q,--quiet", options.quiet, "No progress bar and no report (warnings remain)");
+  add_user_input_options(slice, options.user);
   return slice;
 }
 
 int run_slice(const SliceOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
-  const LoadedProgram loaded = load_program(options.model);
+  const LoadedProgram loaded = load_program(options.model, options.user);
   require_parsed(loaded);
   const int object_index = choose_object(loaded, options.object);
   const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];

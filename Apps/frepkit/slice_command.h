@@ -4,6 +4,7 @@
 // `frepkit mesh`) or a sampled volume (.vti).
 #pragma once
 
+#include "user_inputs.h"
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@ namespace frepkit
 
 struct SliceOptions
 {
+  UserInputs user; ///< --library, --shape
   std::string model;
   std::string output;
   std::optional<std::string> object;

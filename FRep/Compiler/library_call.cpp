@@ -344,6 +344,24 @@ private:
         break;
     }
   }
+  void node(const ast::Expr& e, const ast::UserCallExpr& n)
+  {
+    for (const ast::CallArg& a : n.args)
+    {
+      if (const auto* p = std::get_if<ast::ExprPtr>(&a); p && *p)
+      {
+        expr(**p);
+      }
+      else if (const auto* arr = std::get_if<ast::ArrayName>(&a))
+      {
+        add(messages::kUnassignedArray, arr->location);
+      }
+    }
+    if (program_.user_functions && n.function >= 0 && n.function < program_.user_functions->size())
+    {
+      add(user_function_error(program_.user_functions->at(n.function).name).c_str(), e.location);
+    }
+  }
   void node(const ast::Expr& e, const ast::ObjectCallExpr& n)
   {
     add(messages::kUnassignedArray, semantics::object_call_x_check_location(n));

@@ -11,6 +11,7 @@
 
 #include "Compiler/expr.h"
 #include "Compiler/library_call.h"
+#include "Compiler/user_call.h"
 #include "Semantics/error_positions.h"
 #include "Semantics/runtime_messages.h"
 #include "Library/library.h"
@@ -736,6 +737,67 @@ private:
       }
     }
     return Expr(&dag_, info_call.outputs[0]);
+  }
+
+  /// A user function: an opaque call with the path flag and every item of every argument;
+  /// arguments last to first, arrays checked for unassigned items then (as a library call).
+  Expr eval_node(Frame& frame, const ast::Expr& e, const ast::UserCallExpr& n)
+  {
+    const auto& users = program_.user_functions;
+    if (!users || n.function < 0 || n.function >= users->size())
+    {
+      throw CannotCompile("malformed AST: unknown user function");
+    }
+    std::vector<std::vector<Expr>> items(n.args.size());
+    for (std::size_t i = n.args.size(); i-- > 0;)
+    {
+      if (const auto* p = std::get_if<ast::ExprPtr>(&n.args[i]))
+      {
+        if (!*p)
+        {
+          throw CannotCompile("malformed AST: empty argument");
+        }
+        items[i].push_back(eval(frame, **p));
+      }
+      else if (const auto* a = std::get_if<ast::ArrayName>(&n.args[i]))
+      {
+        std::vector<Cell>& cells = frame.array(*a);
+        guard(not_assigned(all_assigned(cells)), messages::kUnassignedArray, a->location);
+        for (const Cell& c : cells)
+        {
+          items[i].push_back(c.value);
+        }
+      }
+      else
+      {
+        throw CannotCompile("malformed AST: a string argument to a user function");
+      }
+    }
+    if (dead_)
+    {
+      return Expr(0.0);
+    }
+    const UserFunction& function = users->at(n.function);
+    std::vector<NodeId> inputs;
+    std::vector<int> sizes;
+    inputs.push_back(path_.node(dag_));
+    for (const std::vector<Expr>& arg : items)
+    {
+      sizes.push_back(static_cast<int>(arg.size()));
+      for (const Expr& v : arg)
+      {
+        inputs.push_back(v.node(dag_));
+      }
+    }
+    const int error = error_id(user_function_error(function.name), e.location);
+    const NodeId call =
+      dag_.call(make_user_function(users->shared(n.function), std::move(sizes), error),
+        std::move(inputs), 1);
+    Effect effect;
+    effect.is_call = true;
+    effect.node = call;
+    out_.effects.push_back(effect);
+    return Expr(&dag_, dag_.call_of(call).outputs[0]);
   }
 
   static std::vector<bool> arrays_mask(const std::vector<std::vector<Cell>*>& arrays)

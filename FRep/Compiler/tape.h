@@ -113,6 +113,35 @@ public:
   /// Computes outputs from inputs; returns 0 on success or a 1-based error id of the tape.
   virtual int evaluate(Scratch* scratch, std::span<const double> inputs,
     std::span<double> outputs) const = 0;
+
+  // Optional forms (user functions provide them). The defaults say "not provided": the batch
+  // evaluator then calls evaluate() per lane, the interval evaluator takes the whole line, the
+  // gradient evaluator differences.
+
+  /// Many points: input k of lane i is inputs[k][i]; writes outputs[j][i] and, for a lane that
+  /// fails, errors[i] (lanes with errors[i] != 0 on entry have failed before: their outputs
+  /// are ignored, their errors must be kept). Returns false when not provided.
+  virtual bool evaluate_lanes(Scratch*, const double* const* /*inputs*/, int /*count*/,
+    double* const* /*outputs*/, std::uint32_t* /*errors*/) const
+  {
+    return false;
+  }
+  /// An enclosure of the outputs over a box of inputs [lo[k], hi[k]]; sets may_fail when a point
+  /// of the box may fail. Returns false when not provided (the whole line is used).
+  virtual bool enclose(std::span<const double> /*lo*/, std::span<const double> /*hi*/,
+    std::span<double> /*out_lo*/, std::span<double> /*out_hi*/, bool& /*may_fail*/) const
+  {
+    return false;
+  }
+  /// Whether evaluate_jacobian gives exact derivatives.
+  virtual bool has_jacobian() const { return false; }
+  /// Outputs and their derivatives by the inputs, jacobian[j * inputs.size() + k]; the status
+  /// as evaluate(). Called only when has_jacobian().
+  virtual int evaluate_jacobian(Scratch* scratch, std::span<const double> inputs,
+    std::span<double> outputs, std::span<double> /*jacobian*/) const
+  {
+    return evaluate(scratch, inputs, outputs);
+  }
 };
 
 struct CallSite

@@ -51,6 +51,37 @@ public:
     return id > 0 ? id + offset_ : id;
   }
 
+  // The optional forms pass through, their error ids renumbered like evaluate()'s.
+  bool evaluate_lanes(Scratch* scratch, const double* const* inputs, int count,
+    double* const* outputs, std::uint32_t* errors) const override
+  {
+    std::vector<std::uint32_t> inner(errors, errors + count);
+    if (!inner_->evaluate_lanes(scratch, inputs, count, outputs, inner.data()))
+    {
+      return false;
+    }
+    for (int i = 0; i < count; ++i)
+    {
+      if (errors[i] == 0 && inner[static_cast<std::size_t>(i)] != 0)
+      {
+        errors[i] = inner[static_cast<std::size_t>(i)] + static_cast<std::uint32_t>(offset_);
+      }
+    }
+    return true;
+  }
+  bool enclose(std::span<const double> lo, std::span<const double> hi, std::span<double> out_lo,
+    std::span<double> out_hi, bool& may_fail) const override
+  {
+    return inner_->enclose(lo, hi, out_lo, out_hi, may_fail);
+  }
+  bool has_jacobian() const override { return inner_->has_jacobian(); }
+  int evaluate_jacobian(Scratch* scratch, std::span<const double> inputs,
+    std::span<double> outputs, std::span<double> jacobian) const override
+  {
+    const int id = inner_->evaluate_jacobian(scratch, inputs, outputs, jacobian);
+    return id > 0 ? id + offset_ : id;
+  }
+
 private:
   std::shared_ptr<const OpaqueFunction> inner_;
   int offset_ = 0;

@@ -9,6 +9,7 @@
 #include "Eval/instruction_value.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -82,6 +83,21 @@ FREP_ALWAYS_INLINE void call_lanes(const Tape& tape,
   const std::size_t n_in = site.inputs.size();
   const std::size_t n_out = site.outputs.size();
   OpaqueFunction::Scratch* scratch = calls.scratch[site_index].get();
+  // A batch form (a user function's) takes the whole block at once, straight from the rows.
+  if (n_in <= 64 && n_out == 1)
+  {
+    std::array<const double*, 64> in_rows{};
+    for (std::size_t k = 0; k < n_in; ++k)
+    {
+      in_rows[k] = blk.rows[site.inputs[k]];
+    }
+    double* out_row = blk.regs + static_cast<std::size_t>(site.outputs[0]) * blk.stride;
+    if (site.function->evaluate_lanes(scratch, in_rows.data(), blk.n, &out_row, blk.errors))
+    {
+      blk.rows[site.outputs[0]] = out_row;
+      return;
+    }
+  }
   for (int i = 0; i < blk.n; ++i)
   {
     if (blk.errors[i] != 0)

@@ -65,12 +65,18 @@ int GradientEvaluator::call(const CallSite& site, std::size_t site_index)
   {
     call_in_[i] = values_[site.inputs[i]];
   }
-  const int status = run(call_out_);
+  // Exact derivatives when the function gives them (a user function's gradient form).
+  const bool exact = site.function->has_jacobian();
+  const int status = exact
+    ? site.function->evaluate_jacobian(scratch, std::span<const double>(call_in_.data(), n_in),
+        std::span<double>(call_out_.data(), n_out),
+        std::span<double>(call_jacobian_.data(), n_in * n_out))
+    : run(call_out_);
   if (status != 0)
   {
     return status;
   }
-  for (std::size_t i = 0; i < n_in; ++i)
+  for (std::size_t i = 0; i < n_in && !exact; ++i)
   {
     const double x = call_in_[i];
     // cbrt(machine epsilon) balances truncation and rounding error of a central difference.

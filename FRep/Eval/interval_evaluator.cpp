@@ -623,6 +623,48 @@ bool produces_boolean(Opcode op)
   }
 }
 
+/// An opaque call with an enclosure form of its own (a user function's): its outputs over the
+/// box of its inputs' ranges. False (the caller takes the whole line) when it has none, or an
+/// input may be NaN (what the function makes of NaN is unknown).
+template<class Get, class Put>
+bool enclose_call(const CallSite& site, const Get& get, const Put& put, bool& may_fail)
+{
+  constexpr std::size_t kMax = 64;
+  const std::size_t n_in = site.inputs.size();
+  const std::size_t n_out = site.outputs.size();
+  if (n_in > kMax || n_out > kMax)
+  {
+    return false;
+  }
+  std::array<double, kMax> lo{};
+  std::array<double, kMax> hi{};
+  for (std::size_t k = 0; k < n_in; ++k)
+  {
+    const Range r = get(site.inputs[k]);
+    if (r.nan)
+    {
+      return false;
+    }
+    lo[k] = r.v.lo;
+    hi[k] = r.v.hi;
+  }
+  std::array<double, kMax> out_lo{};
+  std::array<double, kMax> out_hi{};
+  bool fails = false;
+  if (!site.function->enclose(std::span<const double>(lo.data(), n_in),
+        std::span<const double>(hi.data(), n_in), std::span<double>(out_lo.data(), n_out),
+        std::span<double>(out_hi.data(), n_out), fails))
+  {
+    return false;
+  }
+  for (std::size_t j = 0; j < n_out; ++j)
+  {
+    put(site.outputs[j], Range{ Interval{ out_lo[j], out_hi[j] }, false });
+  }
+  may_fail = may_fail || fails;
+  return true;
+}
+
 } // namespace
 
 IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
@@ -684,6 +726,10 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
     if (op == Opcode::Call)
     {
       const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
+      if (enclose_call(site, get, put, result.may_fail))
+      {
+        continue;
+      }
       for (std::uint32_t s : site.outputs)
       {
         put(s, whole(true));

@@ -6,6 +6,7 @@
 
 #include "function_table.h"
 #include "source_location.h"
+#include "user_functions.h"
 
 #include <cstdint>
 #include <memory>
@@ -133,6 +134,15 @@ struct CallExpr
   std::vector<CallArg> args;
 };
 
+/// A call of a user function (user_functions.h): `function` indexes the registry the program
+/// was parsed with (Program::user_functions). Arguments in source order, each a real or an
+/// array as the function's kinds say; evaluated last to first like a library call's.
+struct UserCallExpr
+{
+  int function = -1;
+  std::vector<CallArg> args;
+};
+
 /// A call of an earlier object of the same file: OBJ(xarr, aarr [, sarr]). Sizes are checked by
 /// the parser. Without the third argument the caller's own s[] is passed.
 struct ObjectCallExpr
@@ -155,7 +165,7 @@ struct Expr
 {
   SourceLocation location;
   std::variant<NumberExpr, ScalarExpr, ElementExpr, UnaryExpr, BinaryExpr, CompareExpr,
-    LogicExpr, NotExpr, CallExpr, ObjectCallExpr>
+    LogicExpr, NotExpr, CallExpr, ObjectCallExpr, UserCallExpr>
     node;
 };
 
@@ -234,6 +244,8 @@ struct Program
 {
   std::string file;             ///< for diagnostics
   std::vector<Object> objects;  ///< in file order; calls only go to earlier objects
+  /// The user functions the program was parsed with (null: none); UserCallExpr indexes it.
+  std::shared_ptr<const UserFunctionRegistry> user_functions;
 };
 
 /// How select_object compares names.

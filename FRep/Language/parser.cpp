@@ -88,6 +88,7 @@ public:
   {
     program_ = std::make_shared<ast::Program>();
     program_->file = file_;
+    program_->user_functions = options.user_functions;
   }
 
   ParseResult run()
@@ -1014,13 +1015,17 @@ private:
       {
         e = negation->operand.get();
       }
-      else if (const auto* call = std::get_if<ast::CallExpr>(&e->node))
+      else if (std::holds_alternative<ast::CallExpr>(e->node) ||
+               std::holds_alternative<ast::UserCallExpr>(e->node))
       {
-        if (call->args.empty())
+        const auto* call = std::get_if<ast::CallExpr>(&e->node);
+        const auto* user = std::get_if<ast::UserCallExpr>(&e->node);
+        const std::vector<ast::CallArg>& args = call ? call->args : user->args;
+        if (args.empty())
         {
           return e->location;
         }
-        const ast::CallArg& first = call->args.front();
+        const ast::CallArg& first = args.front();
         if (const auto* arg = std::get_if<ast::ExprPtr>(&first))
         {
           e = arg->get();
@@ -1138,6 +1143,19 @@ private:
         const auto object = object_index_.find(t.text);
         if (object == object_index_.end())
         {
+          if (const auto& users = program_->user_functions)
+          {
+            if (const std::optional<int> user = users->find(t.text))
+            {
+              return parse_user_call(*user);
+            }
+            // With user functions in play an unknown call deserves to be named as one.
+            if (peek(1).kind == TokenKind::LeftParen)
+            {
+              fail(t, "Unknown function '" + t.text +
+                  "': not a library function, an earlier object or a registered user function");
+            }
+          }
           fail(t, "Unassigned identificator used in expression");
         }
         return parse_object_call(object->second);
@@ -1196,6 +1214,118 @@ private:
         expect(TokenKind::Comma, "Comma expected");
         advance();
       }
+    }
+    expect(TokenKind::RightParen, "Right parenthes expected");
+    advance();
+    check_depth(depth);
+    return Parsed{ make(where, std::move(node)), depth };
+  }
+
+  /// NAME(arg, ...) for a user function: arguments are parsed by the kinds it registered, and a
+  /// wrong count or kind is named with its signature.
+  Parsed parse_user_call(int index)
+  {
+    const UserFunction& function = program_->user_functions->at(index);
+    const std::string signature = user_function_signature(function);
+    const SourceLocation where = tok().location;
+    advance();
+    expect(TokenKind::LeftParen, "Left parenthes expected");
+    advance();
+    ast::UserCallExpr node;
+    node.function = index;
+    const int arity = static_cast<int>(function.kinds.size());
+    int depth = 1;
+    int given = 0;
+    const auto wrong_count = [&]
+    {
+      // Count what was written to say how many were given: `given` parsed, then the rest up
+      // to the closing parenthesis (one more than its top-level commas, if anything is there).
+      int count = given;
+      std::size_t p = pos_;
+      if (p < tokens_.size() && tokens_[p].kind == TokenKind::Comma)
+      {
+        ++p;
+      }
+      if (p < tokens_.size() && tokens_[p].kind != TokenKind::RightParen)
+      {
+        ++count;
+        int nesting = 0;
+        for (; p < tokens_.size() && tokens_[p].kind != TokenKind::End; ++p)
+        {
+          const TokenKind k = tokens_[p].kind;
+          if (k == TokenKind::LeftParen || k == TokenKind::LeftBracket)
+          {
+            ++nesting;
+          }
+          else if (k == TokenKind::RightParen || k == TokenKind::RightBracket)
+          {
+            if (nesting-- == 0)
+            {
+              break;
+            }
+          }
+          else if (k == TokenKind::Comma && nesting == 0)
+          {
+            ++count;
+          }
+        }
+      }
+      report_message(where, "Function " + function.name + " takes " + std::to_string(arity) +
+          (arity == 1 ? " argument" : " arguments") + ", " + signature + ", but " +
+          std::to_string(count) + " given");
+      throw ParseFailure{};
+    };
+    if (arity == 0 && kind() != TokenKind::RightParen)
+    {
+      wrong_count();
+    }
+    for (int i = 0; i < arity; ++i)
+    {
+      if (kind() == TokenKind::RightParen)
+      {
+        wrong_count();
+      }
+      if (function.kinds[static_cast<std::size_t>(i)] == ArgKind::Real)
+      {
+        Parsed arg = parse_expression();
+        depth = std::max(depth, arg.depth + 1);
+        node.args.emplace_back(std::move(arg.expr));
+      }
+      else
+      {
+        const TokenKind k = kind();
+        if (k != TokenKind::X && k != TokenKind::A && k != TokenKind::S &&
+            k != TokenKind::Identifier)
+        {
+          fail(tok(), "Argument " + std::to_string(i + 1) + " of " + signature +
+              " must be an array name");
+        }
+        int size = 0;
+        node.args.emplace_back(array_argument(size));
+        const int wanted = static_cast<std::size_t>(i) < function.array_sizes.size()
+          ? function.array_sizes[static_cast<std::size_t>(i)]
+          : 0;
+        if (wanted > 0 && size != wanted)
+        {
+          fail(tok(), "Argument " + std::to_string(i + 1) + " of " + signature + " must have " +
+              std::to_string(wanted) + " items, it has " + std::to_string(size));
+        }
+        advance();
+      }
+      given = i + 1;
+      if (i + 1 < arity)
+      {
+        if (kind() == TokenKind::RightParen)
+        {
+          wrong_count();
+        }
+        expect(TokenKind::Comma, "Comma expected");
+        advance();
+      }
+    }
+    if (kind() == TokenKind::Comma)
+    {
+      wrong_count();
     }
     expect(TokenKind::RightParen, "Right parenthes expected");
     advance();

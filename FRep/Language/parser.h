@@ -22,6 +22,8 @@ struct ParseOptions
   /// of the tree, so a flat chain `a | b | c ...` counts one level per operator: 2000 allows
   /// chains of about a thousand terms and needs well under 1 MB of stack in every pass.
   int max_nesting_depth = 2000;
+  /// User functions the program may call by name (user_functions.h); kept by the program.
+  std::shared_ptr<const UserFunctionRegistry> user_functions;
 };
 
 struct ParseResult

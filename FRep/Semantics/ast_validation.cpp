@@ -208,6 +208,44 @@ private:
       }
     }
   }
+  void check_node(const ast::Object& object, const ast::UserCallExpr& node)
+  {
+    const auto& users = program_.user_functions;
+    if (!users || node.function < 0 || node.function >= users->size())
+    {
+      fail("unknown user function in object '" + object.name + "'");
+    }
+    const UserFunction& f = users->at(node.function);
+    if (node.args.size() != f.kinds.size())
+    {
+      fail("wrong argument count for " + f.name);
+    }
+    for (std::size_t i = 0; i < f.kinds.size(); ++i)
+    {
+      const ast::CallArg& arg = node.args[i];
+      if (f.kinds[i] == ArgKind::Array)
+      {
+        if (!std::holds_alternative<ast::ArrayName>(arg))
+        {
+          fail("argument kind mismatch for " + f.name);
+        }
+        check_array(object, std::get<ast::ArrayName>(arg));
+        const int wanted = i < f.array_sizes.size() ? f.array_sizes[i] : 0;
+        if (wanted > 0 && array_size(object, std::get<ast::ArrayName>(arg)) != wanted)
+        {
+          fail("array size mismatch for " + f.name);
+        }
+      }
+      else
+      {
+        if (!std::holds_alternative<ast::ExprPtr>(arg))
+        {
+          fail("argument kind mismatch for " + f.name);
+        }
+        check_child(object, std::get<ast::ExprPtr>(arg));
+      }
+    }
+  }
   void check_node(const ast::Object& object, const ast::ObjectCallExpr& node)
   {
     // Only earlier objects may be called: this is what rules out recursion.

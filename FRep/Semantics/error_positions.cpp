@@ -40,7 +40,7 @@ SourceLocation first_instruction_location(const ast::Expr& expr)
         {
           next = node.lhs.get();
         }
-        else if constexpr (std::is_same_v<T, ast::CallExpr>)
+        else if constexpr (std::is_same_v<T, ast::CallExpr> || std::is_same_v<T, ast::UserCallExpr>)
         {
           if (!node.args.empty())
           {

@@ -395,6 +395,8 @@ private:
       }
       case 9: // ObjectCallExpr
         return eval_object_call(e, *std::get_if<ast::ObjectCallExpr>(&e.node), f, out);
+      case 10: // UserCallExpr
+        return eval_user(e, *std::get_if<ast::UserCallExpr>(&e.node), f, out);
     }
     return true;
   }
@@ -603,6 +605,51 @@ private:
       error_.message = *context.abort_message;
       error_.location = e.location;
       error_.abort = true;
+      return false;
+    }
+    return true;
+  }
+
+  bool eval_user(const ast::Expr& e, const ast::UserCallExpr& n, Frame& f, double& out)
+  {
+    const UserFunction& function = program_.user_functions->at(n.function);
+    std::array<double, kMaxFunctionArity> reals{};
+    std::array<UserArgument, kMaxFunctionArity> args{};
+    // Last to first, as a library call's arguments.
+    for (std::size_t i = n.args.size(); i-- > 0;)
+    {
+      const ast::CallArg& arg = n.args[i];
+      if (const auto* expr = std::get_if<ast::ExprPtr>(&arg))
+      {
+        if (!eval(**expr, f, reals[i]))
+        {
+          return false;
+        }
+        args[i] = UserArgument{ &reals[i], 1 };
+      }
+      else if (const auto* array = std::get_if<ast::ArrayName>(&arg))
+      {
+        if (!array_assigned(*array, f))
+        {
+          return fail(messages::kUnassignedArray, array->location);
+        }
+        const std::span<double> items = array_span(*array, f);
+        args[i] = UserArgument{ items.data(), static_cast<int>(items.size()) };
+      }
+    }
+    bool ok = false;
+    try
+    {
+      ok = function.point(std::span(args.data(), n.args.size()), out);
+    }
+    catch (...)
+    {
+      ok = false; // a throwing user function fails at this point, like any run-time error
+    }
+    if (!ok)
+    {
+      fail("", e.location);
+      error_.message = user_function_error(function.name);
       return false;
     }
     return true;

@@ -296,7 +296,8 @@ int main(int argc, char** argv)
             << " boundary " << topology.boundary_edges << " nonmanifold "
             << topology.nonmanifold_edges << " misoriented " << topology.misoriented_edges
             << " degenerate " << topology.degenerate_triangles << " components "
-            << topology.components << " volume " << topology.signed_volume << " normals "
+            << topology.components << " euler " << topology.euler_characteristic << " volume "
+            << topology.signed_volume << " normals "
             << (loaded.normals ? "yes" : "no") << " colours " << (loaded.colours ? "yes" : "no")
             << '\n';
   if (closed && !(topology.watertight_and_oriented() && topology.signed_volume > 0))

@@ -78,6 +78,10 @@ std::string show(const Expr& e)
     {
       return "obj" + std::to_string(o.object) + (o.s ? "(x,a,s)" : "(x,a)");
     }
+    std::string operator()(const UserCallExpr& u) const
+    {
+      return "user" + std::to_string(u.function) + "/" + std::to_string(u.args.size());
+    }
   };
   return std::visit(Visitor{}, e.node);
 }

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# FRepStudio --library: a model calling the example user library's ring() renders without
+# errors in a screenshot; a library that does not exist is exit code 1 naming it.
+#   user_library_test.sh XVFB_RUN FREPSTUDIO LIBRARY SOURCE_DIR
+set -u
+xvfb=$1
+studio=$2
+library=$3
+model="$4/Examples/user-library/ring.hf"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+status=0
+"$xvfb" "$studio" --library "$library" --screenshot "$work/ring.png" --size 640x400 "$model" \
+  >"$work/out" 2>"$work/err"
+code=$?
+if [ $code -ne 0 ] || [ ! -s "$work/ring.png" ] || grep -q "model has errors" "$work/err"; then
+  echo "FAIL: screenshot with the library: code $code, $(cat "$work/err")"; status=1
+else
+  echo "PASS: screenshot with the library"
+fi
+"$xvfb" "$studio" --library /nonexistent/libshapes.so --screenshot "$work/none.png" "$model" \
+  >"$work/out" 2>"$work/err"
+code=$?
+if [ $code -ne 1 ] || ! grep -q "user library /nonexistent/libshapes.so: no such file" "$work/err"; then
+  echo "FAIL: a missing library: code $code, $(cat "$work/err")"; status=1
+else
+  echo "PASS: a missing library is named, exit code 1"
+fi
+"$xvfb" "$studio" --screenshot "$work/without.png" --size 640x400 "$model" >"$work/out" 2>"$work/err"
+if grep -q "model has errors" "$work/err"; then
+  echo "PASS: without the library the model has errors"
+else
+  echo "FAIL: without the library no error was noted: $(cat "$work/err")"; status=1
+fi
+exit $status

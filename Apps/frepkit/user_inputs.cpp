@@ -1,0 +1,48 @@
+#include "user_inputs.h"
+
+#include "Language/user_library.h"
+#include "user_error.h"
+
+#include <CLI/CLI.hpp>
+
+namespace frepkit
+{
+
+void add_user_input_options(CLI::App* command, UserInputs& inputs)
+{
+  command->add_option("--library", inputs.libraries,
+    "A user library (shared object implementing frepkit_user.h) whose functions the model may "
+    "call by name; repeatable")
+    ->allow_extra_args(false);
+  command->add_option("--shape", inputs.shapes,
+    "name=FILE: a closed triangle mesh (.stl, .obj, .ply, .vtp: signed distance, >= 0 inside) "
+    "or a volume (.vti[:ISO]: its scalars minus ISO) that the model calls as name(x); "
+    "repeatable")
+    ->allow_extra_args(false);
+  command->add_flag("--unsigned-distance", inputs.unsigned_distance,
+    "Accept open or non-manifold meshes for --shape: their F is minus the unsigned distance");
+}
+
+std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs)
+{
+  if (inputs.libraries.empty() && inputs.shapes.empty())
+  {
+    return nullptr;
+  }
+  auto registry = std::make_shared<frep::UserFunctionRegistry>();
+  for (const std::string& path : inputs.libraries)
+  {
+    const frep::UserLibraryResult r = frep::load_user_library(path, *registry);
+    if (!r.ok())
+    {
+      throw UserError(r.error);
+    }
+  }
+  for (const std::string& spec : inputs.shapes)
+  {
+    add_shape_input(spec, inputs.unsigned_distance, *registry);
+  }
+  return registry;
+}
+
+} // namespace frepkit

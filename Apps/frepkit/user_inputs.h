@@ -1,0 +1,38 @@
+// What a model may call besides the library: user libraries (--library FILE, frepkit_user.h)
+// and external shapes (--shape name=FILE, a mesh or a volume as a function name(x)). Shared by
+// the subcommands that read models (check, eval, mesh, slice, map).
+#pragma once
+
+#include "Language/user_functions.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CLI
+{
+class App;
+}
+
+namespace frepkit
+{
+
+struct UserInputs
+{
+  std::vector<std::string> libraries; ///< --library FILE (repeatable)
+  std::vector<std::string> shapes;    ///< --shape name=FILE (repeatable)
+  bool unsigned_distance = false;     ///< --unsigned-distance: open meshes allowed
+};
+
+/// Adds --library, --shape and --unsigned-distance to a subcommand.
+void add_user_input_options(CLI::App* command, UserInputs& inputs);
+
+/// The registry of every library and shape, or null when none is given. Throws UserError
+/// naming the library (or shape file) and the function when one cannot be loaded.
+std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs);
+
+/// Adds the shape `spec` (name=FILE) to `registry`; throws UserError (shape_inputs.cpp).
+void add_shape_input(const std::string& spec, bool unsigned_distance,
+  frep::UserFunctionRegistry& registry);
+
+} // namespace frepkit

@@ -27,6 +27,9 @@ packages=(
   # find the binaries whose libraries become the package's Depends
   dpkg-dev file
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # the sanitizer build and the fuzz harnesses (ctest -R Build.SanitizersAndFuzzing): clang 14,
+  # its runtime libraries (ASan, UBSan, libFuzzer), llvm-profdata/llvm-cov for coverage by hand
+  clang libclang-rt-14-dev llvm
 )
 
 if [ "$(id -u)" -eq 0 ]; then

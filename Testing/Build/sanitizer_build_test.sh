@@ -14,6 +14,7 @@ seconds=${4:-60}
 launcher=${5:-}
 tree="$build_dir/tree"
 started=$SECONDS
+mkdir -p "$build_dir"
 
 for tool in clang clang++; do
   command -v "$tool" > /dev/null || { echo "sanitizer build: $tool not found (Scripts/install-dependencies.sh installs it)"; exit 1; }

@@ -30,6 +30,9 @@ packages=(
   # the durable-write test traces fsync/rename (Testing/Apps/frepkit_durable_writes_test.sh);
   # FRepStudio's leak check preloads gcc's LeakSanitizer runtime (liblsan.so.0)
   strace liblsan0
+  # the sanitizer build and the fuzz harnesses (ctest -R Build.SanitizersAndFuzzing): clang 14,
+  # its runtime libraries (ASan, UBSan, libFuzzer), llvm-profdata/llvm-cov for coverage by hand
+  clang libclang-rt-14-dev llvm
 )
 
 if [ "$(id -u)" -eq 0 ]; then

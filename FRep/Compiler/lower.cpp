@@ -477,7 +477,10 @@ private:
     guard(logical_and(tiny, e <= Expr(kEps)), messages::kZeroPowerBase, location);
     if (!never_negative(base))
     {
-      const Expr fractional = (e - floor(e)) >= Expr(kEps);
+      // Not `>= kEps`: for an infinite or NaN exponent e - floor(e) is NaN, which
+      // hf_pow_error counts as fractional (its test is `< kEps`, false for NaN). Found by
+      // fuzzing (Testing/Fuzz/regressions/fuzz_hyperfun_eval/negative_base_infinite_exponent.hf).
+      const Expr fractional = logical_not((e - floor(e)) < Expr(kEps));
       guard(logical_and(logical_and(logical_not(tiny), fractional), base < Expr(0.0)),
         messages::kNegativePowerBase,
         location);

@@ -274,9 +274,15 @@ double GradientEvaluator::evaluate(std::span<const double> inputs, std::span<dou
         if ((b - std::floor(b)) < hf::kEps)
         {
           // a ^ n with n = HF_round(|b|) signed: locally constant in b.
+          // Beyond the int range hf_round gives INT_MIN, the repeated product runs no
+          // iteration and the value is the constant 1: derivative 0 (and -m would overflow,
+          // found by fuzz_hyperfun_eval under UBSan).
           const int m = hf::hf_round(std::fabs(b));
-          const double e = b < 0.0 ? -m : m;
-          ca = e == 0 ? 0.0 : e * std::pow(a, e - 1);
+          if (m != std::numeric_limits<int>::min())
+          {
+            const double e = b < 0.0 ? -static_cast<double>(m) : static_cast<double>(m);
+            ca = e == 0 ? 0.0 : e * std::pow(a, e - 1);
+          }
         }
         else
         {

@@ -924,6 +924,22 @@ std::optional<Json> parse_document(Reader& r, const std::string& json_text, Load
     result.errors.push_back({ line_column(json_text, e.byte), syntax_message(e.what()) });
     return std::nullopt;
   }
+  catch (const Json::out_of_range& e)
+  {
+    // A number too large for a double (406, "number overflow parsing '1e999'"): the parser
+    // throws this instead of a parse_error (found by fuzzing; load_mapping must not throw). It
+    // carries no position: the number's first occurrence in the text is the place.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\'');
+    const std::size_t close = what.rfind('\'');
+    const std::size_t at = open < close
+      ? json_text.find(what.substr(open + 1, close - open - 1))
+      : std::string::npos;
+    const std::size_t id_end = what.find("] ");
+    result.errors.push_back({ at == std::string::npos ? std::string() : line_column(json_text, at + 1),
+      id_end == std::string::npos ? what : what.substr(id_end + 2) });
+    return std::nullopt;
+  }
 }
 
 // "version", "object", "parameters".

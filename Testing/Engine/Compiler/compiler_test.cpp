@@ -342,6 +342,35 @@ TEST(CompilerModel, ZeroBaseGuardOnlyForNonPositiveConstantExponents)
   EXPECT_EQ(guards, 2) << tape->dump();
 }
 
+// A negative base to an infinite or NaN exponent is "Negative value for power" in the
+// interpreter (e - floor(e) is NaN, not < EPS: not integral); the tape's guard once tested
+// `>= EPS` and let it through as NaN without an error (found by fuzz_hyperfun_eval).
+TEST(CompilerModel, NegativeBaseToANonFiniteExponentFailsAsInTheInterpreter)
+{
+  const std::string text = "my_model(x[2], a[1]) { my_model = x[1] ^ x[2]; }";
+  auto model = compile_text(text);
+  ASSERT_TRUE(model);
+  PointEvaluator pe(model->tape());
+  Interpreter interpreter(parse_program(text, "<test>").program, 0);
+  std::vector<double> out(1);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double e : { -inf, inf, std::numeric_limits<double>::quiet_NaN() })
+  {
+    const std::vector<double> x{ -5.5, e };
+    const PointResult reference = interpreter.evaluate(x);
+    ASSERT_TRUE(reference.error) << "x2 = " << e;
+    EXPECT_EQ(reference.error->message, "Negative value for power");
+    const int id = pe.evaluate(x, out);
+    ASSERT_GT(id, 0) << "x2 = " << e;
+    EXPECT_EQ(model->tape()->errors[static_cast<std::size_t>(id - 1)].message,
+      "Negative value for power");
+  }
+  // A positive base is no error for the interpreter nor for the tape.
+  const std::vector<double> positive{ 2.0, -inf };
+  EXPECT_FALSE(interpreter.evaluate(positive).error);
+  EXPECT_EQ(pe.evaluate(positive, out), 0);
+}
+
 TEST(CompilerModel, ErrorsKeepEvaluationOrderAndPosition)
 {
   // Right operand first: the division (column 24) fails before the sqrt (column 15).

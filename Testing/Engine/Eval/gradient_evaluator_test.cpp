@@ -136,6 +136,28 @@ TEST(GradientEvaluator, HfPowIntAndNegativeBases)
   }
 }
 
+// An integral exponent beyond the int range: hf_round gives INT_MIN, the value is the constant
+// 1 and its derivative 0. Negating INT_MIN was undefined behaviour (found by fuzz_hyperfun_eval
+// under UBSan).
+TEST(GradientEvaluator, HfPowBeyondTheIntRangeIsConstant)
+{
+  TapeBuilder b(2);
+  const auto f = b.op(Opcode::HfPow, b.input(0), b.input(1));
+  const auto tape = b.finish({ f });
+  GradientEvaluator gradient(tape);
+  PointEvaluator point(tape);
+  for (const double e : { 3e9, -3e9, 1e300 })
+  {
+    const std::vector<double> x{ -1.5, e };
+    std::vector<double> g(2);
+    const double value = gradient.evaluate(x, g);
+    EXPECT_EQ(value, point.value(x)) << "e = " << e;
+    EXPECT_EQ(value, 1.0) << "e = " << e;
+    EXPECT_EQ(g[0], 0.0) << "e = " << e;
+    EXPECT_EQ(g[1], 0.0) << "e = " << e;
+  }
+}
+
 TEST(GradientEvaluator, SphereGradientIsExact)
 {
   TapeBuilder b(3);

@@ -224,6 +224,17 @@ TEST(MappingJson, SyntaxErrorGivesLineAndColumn)
   EXPECT_EQ(r2.errors[0].place, "3:3");
 }
 
+// A number beyond a double makes nlohmann throw out_of_range (406), not parse_error: it was an
+// exception out of load_mapping, which promises never to throw (found by fuzz_mapping_plan).
+TEST(MappingJson, NumberOverflowIsAnErrorWithItsPlace)
+{
+  LoadResult r;
+  ASSERT_NO_THROW(r = load_mapping("{\n  \"version\": 1,\n  \"animation\": { \"fps\": 2e999 }\n}"));
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].place, "3:25") << r.errors[0].message;
+  EXPECT_NE(r.errors[0].message.find("number overflow"), std::string::npos) << r.errors[0].message;
+}
+
 TEST(MappingJson, AllErrorsAreCollected)
 {
   std::string bad = replaced(example_mapping, "\"fps\": 24", "\"fps\": -1");

@@ -62,7 +62,7 @@ echo "tested ($((SECONDS - started)) s)"
 
 # Two harnesses at a time: this test runs alone (RUN_SERIAL) on a machine of two cores or more.
 if [ "$seconds" -gt 0 ]; then
-  harnesses=(fuzz_hyperfun_parser fuzz_hyperfun_eval fuzz_mapping_plan fuzz_points_reader fuzz_hfp_arguments)
+  harnesses=(fuzz_hyperfun_parser fuzz_hyperfun_eval fuzz_vm_reader fuzz_mapping_plan fuzz_points_reader fuzz_hfp_arguments)
   running=0
   for h in "${harnesses[@]}"; do
     [ -x "$tree/bin/$h" ] || { echo "sanitizer build: harness $h was not built"; failures=$((failures + 1)); continue; }

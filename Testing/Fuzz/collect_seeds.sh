@@ -31,6 +31,9 @@ case "$harness" in
   fuzz_mapping_plan)
     copy_tree "$source_dir/Examples" '*.json'
     ;;
+  fuzz_vm_reader)
+    copy_tree "$source_dir/Examples" '*.vm'
+    ;;
   fuzz_points_reader|fuzz_hfp_arguments)
     ;;
   *)

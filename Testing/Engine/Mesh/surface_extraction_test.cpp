@@ -208,7 +208,10 @@ TEST(SurfaceExtraction, CullingGivesTheDenseMeshAndThreadsDoNotMatter)
 std::vector<std::uint32_t> bits_of(const std::vector<float>& v)
 {
   std::vector<std::uint32_t> out(v.size());
-  std::memcpy(out.data(), v.data(), v.size() * sizeof(float));
+  if (!v.empty()) // (memcpy from an empty vector's null data is undefined)
+  {
+    std::memcpy(out.data(), v.data(), v.size() * sizeof(float));
+  }
   return out;
 }
 

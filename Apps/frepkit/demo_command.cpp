@@ -103,6 +103,7 @@ int run_demo(const DemoOptions& options)
   map.force = options.force;
   map.threads = options.threads;
   map.quiet = options.quiet;
+  map.manifest_name = ".manifest.map.json"; // read back below; manifest.json is written once
   const int code = run_map(map);
   if (code != 0)
   {
@@ -135,16 +136,17 @@ int run_demo(const DemoOptions& options)
   const double mesh_seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  // 3. One manifest: the map's, with the meshes added.
+  // 3. One manifest: the map's (under its intermediate name), with the meshes added.
+  const fs::path map_manifest_path = out / map.manifest_name;
   const fs::path manifest_path = out / "manifest.json";
   nlohmann::json manifest;
   {
-    std::ifstream in(manifest_path);
+    std::ifstream in(map_manifest_path);
     manifest = nlohmann::json::parse(in, nullptr, false);
   }
   if (manifest.is_discarded() || !manifest.is_object())
   {
-    throw UserError("cannot read " + manifest_path.string() + " back");
+    throw UserError("cannot read " + map_manifest_path.string() + " back");
   }
   manifest["demo"] = "Homotopic Fun in 5D Space";
   for (auto& m : meshes)
@@ -160,6 +162,8 @@ int run_demo(const DemoOptions& options)
     file.stream() << manifest.dump(2) << "\n";
     file.commit();
   }
+  std::error_code removed;
+  fs::remove(map_manifest_path, removed); // (left only by an interrupted run; rewritten next time)
   if (!options.quiet)
   {
     char line[200];

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace frepkit::map_run
@@ -12,8 +13,30 @@ namespace frepkit::map_run
 namespace
 {
 
-// What the frames depend on: a frame on disk is reused only when the model, the mapping and
-// the overrides are the ones it was rendered with.
+/// The bytes of a file, or "" when it cannot be read.
+std::string bytes_of(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return in ? std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>())
+            : std::string();
+}
+
+/// The file of a --shape name=FILE[:ISO] (the ISO suffix is part of the spec, hashed anyway).
+std::string shape_file_bytes(const std::string& spec)
+{
+  const std::size_t eq = spec.find('=');
+  const std::string file = eq == std::string::npos ? spec : spec.substr(eq + 1);
+  std::string bytes = bytes_of(file);
+  if (const std::size_t colon = file.rfind(':'); bytes.empty() && colon != std::string::npos)
+  {
+    bytes = bytes_of(file.substr(0, colon));
+  }
+  return bytes;
+}
+
+// What the frames depend on: a frame on disk is reused only when the model, the mapping, the
+// overrides and the user's libraries and shapes (their files' contents) are the ones it was
+// rendered with.
 std::string fingerprint(const std::string& model_text,
   const std::string& mapping_text,
   const MapOptions& options)
@@ -25,6 +48,15 @@ std::string fingerprint(const std::string& model_text,
   {
     key << a << ',';
   }
+  for (const std::string& library : options.user.libraries)
+  {
+    key << '\0' << library << '\0' << bytes_of(library);
+  }
+  for (const std::string& shape : options.user.shapes)
+  {
+    key << '\0' << shape << '\0' << shape_file_bytes(shape);
+  }
+  key << '\0' << options.user.unsigned_distance;
   char hex[32];
   std::snprintf(hex, sizeof hex, "%016zx", std::hash<std::string>{}(key.str()));
   return hex;

@@ -23,7 +23,7 @@ void write_manifest(const MapOptions& options,
     timing[s.name] = s.seconds;
   }
   manifest["seconds"] = timing;
-  write_text_file(out_dir / "manifest.json", manifest.dump(2) + "\n");
+  write_text_file(out_dir / options.manifest_name, manifest.dump(2) + "\n");
 }
 
 void print_summary(const MapOptions& options,

@@ -128,6 +128,17 @@ if run "metamorphosis map" 0 "$frepkit" map --shape pebble="$pebble" "$meta/meta
     expect_in "movie has 6 frames" "frames $(field frames "$line")" "frames 6"
   fi
 fi
+# The frames' fingerprint covers the shape file: another mesh under the same name renders anew.
+if [ -s map/frames/.fingerprint ] && [ -s from_stl.stl ]; then
+  before=$(cat map/frames/.fingerprint)
+  run "metamorphosis map with another pebble" 0 "$frepkit" map --shape pebble=from_stl.stl \
+    "$meta/metamorphosis.hf" "$meta/metamorphosis.json" -O map --frames 6 --resolution 40 -q
+  after=$(cat map/frames/.fingerprint)
+  if [ "$before" != "$after" ]; then pass "another shape file changes the frames' fingerprint"
+  else fail "the frames' fingerprint ignores the shape file ($before)"; fi
+else
+  fail "no fingerprint or no second mesh to compare"
+fi
 run "map without the shape fails clearly" 1 "$frepkit" map "$meta/metamorphosis.hf" \
   "$meta/metamorphosis.json" -O map2 -q
 expect_in "unknown pebble" "$err" "pebble"

@@ -34,26 +34,6 @@ bool is_commutative(Opcode op)
   }
 }
 
-bool is_boolean_op(Opcode op)
-{
-  switch (op)
-  {
-    case Opcode::Eq:
-    case Opcode::Ne:
-    case Opcode::Lt:
-    case Opcode::Le:
-    case Opcode::Gt:
-    case Opcode::Ge:
-    case Opcode::Truthy:
-    case Opcode::And:
-    case Opcode::Or:
-    case Opcode::Not:
-      return true;
-    default:
-      return false;
-  }
-}
-
 bool same_bits(double x, double y)
 {
   return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
@@ -99,14 +79,14 @@ bool Dag::compute_boolean(const Node& n) const
   {
     return nodes_[n.b].boolean && nodes_[n.c].boolean;
   }
-  return is_boolean_op(n.op);
+  return is_boolean_opcode(n.op);
 }
 
 bool Dag::compute_never_negative(const Node& n) const
 {
   // "Never compares < 0": NaN and -0 are allowed, which is what the guards test (v < 0).
   auto nn = [this](NodeId id) { return nodes_[id].never_negative; };
-  if (is_boolean_op(n.op))
+  if (is_boolean_opcode(n.op))
   {
     return true; // 1.0 or 0.0
   }

@@ -130,6 +130,26 @@ std::string number(double v)
 
 } // namespace
 
+bool is_boolean_opcode(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Eq:
+    case Opcode::Ne:
+    case Opcode::Lt:
+    case Opcode::Le:
+    case Opcode::Gt:
+    case Opcode::Ge:
+    case Opcode::Truthy:
+    case Opcode::And:
+    case Opcode::Or:
+    case Opcode::Not:
+      return true;
+    default:
+      return false;
+  }
+}
+
 int operand_count(Opcode op)
 {
   switch (op)

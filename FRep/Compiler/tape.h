@@ -75,6 +75,9 @@ const char* opcode_name(Opcode op);
 /// operands are an immediate, an input index or a call site; 3 only for Select).
 int operand_count(Opcode op);
 
+/// Whether the opcode's result is always the boolean 1.0 or 0.0 (comparisons and logic).
+bool is_boolean_opcode(Opcode op);
+
 /// One instruction. Slots are indices into the evaluator's register file.
 struct Instruction
 {

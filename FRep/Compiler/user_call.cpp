@@ -35,13 +35,7 @@ public:
       outputs[0] = 0.0;
       return 0;
     }
-    std::array<UserArgument, kMaxFunctionArity> args{};
-    const double* p = inputs.data() + 1;
-    for (std::size_t i = 0; i < sizes_.size(); ++i)
-    {
-      args[i] = UserArgument{ p, sizes_[i] };
-      p += sizes_[i];
-    }
+    const std::array<UserArgument, kMaxFunctionArity> args = arguments(inputs);
     try
     {
       double value = 0;
@@ -163,13 +157,7 @@ public:
       outputs[0] = 0.0;
       return 0;
     }
-    std::array<UserArgument, kMaxFunctionArity> args{};
-    const double* p = inputs.data() + 1;
-    for (std::size_t i = 0; i < sizes_.size(); ++i)
-    {
-      args[i] = UserArgument{ p, sizes_[i] };
-      p += sizes_[i];
-    }
+    const std::array<UserArgument, kMaxFunctionArity> args = arguments(inputs);
     try
     {
       double value = 0;
@@ -188,6 +176,19 @@ public:
   }
 
 private:
+  /// The call's inputs after the path flag, cut into the function's arguments.
+  std::array<UserArgument, kMaxFunctionArity> arguments(std::span<const double> inputs) const
+  {
+    std::array<UserArgument, kMaxFunctionArity> args{};
+    const double* p = inputs.data() + 1;
+    for (std::size_t i = 0; i < sizes_.size(); ++i)
+    {
+      args[i] = UserArgument{ p, sizes_[i] };
+      p += sizes_[i];
+    }
+    return args;
+  }
+
   std::shared_ptr<const UserFunction> function_;
   std::vector<int> sizes_;
   std::size_t items_ = 0;

@@ -602,27 +602,6 @@ Choice min_choice(const Range& a, const Range& b)
   return Choice::Keep;
 }
 
-/// Whether the opcode's result is always 1.0 or 0.0 (boolean() ranges are exact for them).
-bool produces_boolean(Opcode op)
-{
-  switch (op)
-  {
-    case Opcode::Eq:
-    case Opcode::Ne:
-    case Opcode::Lt:
-    case Opcode::Le:
-    case Opcode::Gt:
-    case Opcode::Ge:
-    case Opcode::Truthy:
-    case Opcode::Not:
-    case Opcode::And:
-    case Opcode::Or:
-      return true;
-    default:
-      return false;
-  }
-}
-
 /// An opaque call with an enclosure form of its own (a user function's): its outputs over the
 /// box of its inputs' ranges. False (the caller takes the whole line) when it has none, or an
 /// input may be NaN (what the function makes of NaN is unknown).
@@ -949,7 +928,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       case Opcode::Call:
         break; // handled above
     }
-    if (choices && produces_boolean(op) && r.v.lo == r.v.hi)
+    if (choices && is_boolean_opcode(op) && r.v.lo == r.v.hi)
     {
       choices[at] = r.v.lo != 0.0 ? Choice::True : Choice::False;
     }

@@ -47,26 +47,8 @@ bool may_simplify(const Tape& tape)
   return std::any_of(tape.code.begin(), tape.code.end(),
     [](const Instruction& ins)
     {
-      switch (ins.op)
-      {
-        case Opcode::Max:
-        case Opcode::Min:
-        case Opcode::Select:
-        case Opcode::Eq:
-        case Opcode::Ne:
-        case Opcode::Lt:
-        case Opcode::Le:
-        case Opcode::Gt:
-        case Opcode::Ge:
-        case Opcode::Truthy:
-        case Opcode::Not:
-        case Opcode::And:
-        case Opcode::Or:
-        case Opcode::ErrorIf:
-          return true;
-        default:
-          return false;
-      }
+      return is_boolean_opcode(ins.op) || ins.op == Opcode::Max || ins.op == Opcode::Min ||
+             ins.op == Opcode::Select || ins.op == Opcode::ErrorIf;
     });
 }
 

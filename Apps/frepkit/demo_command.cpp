@@ -103,7 +103,8 @@ int run_demo(const DemoOptions& options)
   map.force = options.force;
   map.threads = options.threads;
   map.quiet = options.quiet;
-  map.manifest_name = ".manifest.map.json"; // read back below; manifest.json is written once
+  std::string map_manifest; // the map's manifest, completed below: manifest.json is written once
+  map.manifest_out = &map_manifest;
   const int code = run_map(map);
   if (code != 0)
   {
@@ -136,17 +137,12 @@ int run_demo(const DemoOptions& options)
   const double mesh_seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  // 3. One manifest: the map's (under its intermediate name), with the meshes added.
-  const fs::path map_manifest_path = out / map.manifest_name;
+  // 3. One manifest: the map's, with the meshes added.
   const fs::path manifest_path = out / "manifest.json";
-  nlohmann::json manifest;
-  {
-    std::ifstream in(map_manifest_path);
-    manifest = nlohmann::json::parse(in, nullptr, false);
-  }
+  nlohmann::json manifest = nlohmann::json::parse(map_manifest, nullptr, false);
   if (manifest.is_discarded() || !manifest.is_object())
   {
-    throw UserError("cannot read " + map_manifest_path.string() + " back");
+    throw UserError("internal error: the map's manifest is not a JSON object");
   }
   manifest["demo"] = "Homotopic Fun in 5D Space";
   for (auto& m : meshes)
@@ -162,8 +158,6 @@ int run_demo(const DemoOptions& options)
     file.stream() << manifest.dump(2) << "\n";
     file.commit();
   }
-  std::error_code removed;
-  fs::remove(map_manifest_path, removed); // (left only by an interrupted run; rewritten next time)
   if (!options.quiet)
   {
     char line[200];

@@ -33,10 +33,10 @@ struct MapOptions
   std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape
   std::string name;              ///< output stem; default: the mapping file's stem
   bool force = false;            ///< re-render frames that exist
-  /// The manifest's file name in the output directory. frepkit demo gives the map an
-  /// intermediate name and writes manifest.json itself, once, with the meshes added: an
-  /// interruption between the two writes must leave the old manifest.json, not the map's.
-  std::string manifest_name = "manifest.json";
+  /// When set, the manifest's text is given here instead of written to manifest.json: frepkit
+  /// demo adds the meshes and writes manifest.json itself, once, so that an interruption leaves
+  /// either the old manifest or the complete new one, and no intermediate file.
+  std::string* manifest_out = nullptr;
   int threads = 0;
   bool quiet = false;
 };

@@ -23,7 +23,13 @@ void write_manifest(const MapOptions& options,
     timing[s.name] = s.seconds;
   }
   manifest["seconds"] = timing;
-  write_text_file(out_dir / options.manifest_name, manifest.dump(2) + "\n");
+  const std::string text = manifest.dump(2) + "\n";
+  if (options.manifest_out != nullptr)
+  {
+    *options.manifest_out = text;
+    return;
+  }
+  write_text_file(out_dir / "manifest.json", text);
 }
 
 void print_summary(const MapOptions& options,

@@ -8,6 +8,7 @@
 #include "map_command.h"
 #include "mesh_command.h"
 #include "slice_command.h"
+#include "render_command.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
@@ -103,6 +104,8 @@ int main(int argc, char** argv)
   CLI::App* eval = frepkit::add_eval_command(app, eval_options);
   CLI::App* mesh = frepkit::add_mesh_command(app, mesh_options);
   CLI::App* slice = frepkit::add_slice_command(app, slice_options);
+  frepkit::RenderOptions render_options;
+  CLI::App* render = frepkit::add_render_command(app, render_options);
   frepkit::MapOptions map_options;
   CLI::App* map = frepkit::add_map_command(app, map_options);
   frepkit::DemoOptions demo_options;
@@ -142,6 +145,10 @@ int main(int argc, char** argv)
       if (slice->parsed())
       {
         return frepkit::run_slice(slice_options);
+      }
+      if (render->parsed())
+      {
+        return frepkit::run_render(render_options);
       }
       if (map->parsed())
       {

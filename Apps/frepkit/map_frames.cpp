@@ -167,17 +167,12 @@ void render_frames(const MapOptions& options,
         return;
       }
       const mapping::Sample& frame = plan.frames[k];
-      const auto m0 = Clock::now();
-      const mapping::Section section = workers.section(frame, worker);
-      const auto r0 = Clock::now();
-      frep::render::Image picture =
-        mapping::render_sample(plan, section, frame, camera, render.width, render.height, render);
-      mapping::decorate_frame(picture, plan, frame, render, workers.kit(worker));
+      MapWorkers::Picture p =
+        workers.picture(frame, camera, render.width, render.height, worker);
+      mapping::decorate_frame(p.image, plan, frame, render, workers.kit(worker));
       const auto w0 = Clock::now();
-      write_png_file(path, picture);
-      frame_ledger.add(std::chrono::duration<double>(r0 - m0).count(),
-        std::chrono::duration<double>(w0 - r0).count(),
-        seconds_since(w0));
+      write_png_file(path, p.image);
+      frame_ledger.add(p.mesh_seconds, p.render_seconds, seconds_since(w0));
       workers.advance();
     });
   const std::size_t reused = reused_count;

@@ -19,6 +19,7 @@
 #include "Render/image.h"
 #include "Scene/pictures.h"
 #include "Scene/section_mesh.h"
+#include "Scene/section_raycast.h"
 
 #include "Compiler/model.h"
 #include "Eval/thread_pool.h"
@@ -129,6 +130,24 @@ public:
 
   /// The section of `sample` meshed on `worker`'s pool; a UserError when interrupted or failed.
   mapping::Section section(const mapping::Sample& sample, int worker);
+
+  /// The sample's picture by the mapping's render method: its section meshed on `worker`'s
+  /// pool and rasterised, or drawn by rays on `threads` threads (with `floor`, if given). A
+  /// UserError when interrupted or failed.
+  struct Picture
+  {
+    frep::render::Image image;
+    double mesh_seconds = 0.0;   ///< meshing (0 when ray-cast)
+    double render_seconds = 0.0; ///< rasterising or ray casting
+    std::size_t triangles = 0;
+  };
+  Picture picture(const mapping::Sample& sample,
+    const frep::render::Camera& camera,
+    int width,
+    int height,
+    int worker,
+    int threads = 1,
+    const frep::raycast::Floor* floor = nullptr);
 
   /// Runs body(i, worker) for i in [0, count) on the workers; the first exception (or an
   /// interrupt) stops the others and is rethrown.

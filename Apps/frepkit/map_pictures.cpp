@@ -51,12 +51,9 @@ void render_spreadsheet(const MapInputs& in,
   workers.parallel(plan.cells.size(),
     [&](std::size_t i, int worker)
     {
-      const auto m0 = Clock::now();
-      const mapping::Section section = workers.section(plan.cells[i], worker);
-      const auto r0 = Clock::now();
-      pictures[i] =
-        mapping::render_sample(plan, section, plan.cells[i], camera, cell_px, cell_px, spec.render);
-      cell_ledger.add(std::chrono::duration<double>(r0 - m0).count(), seconds_since(r0), 0.0);
+      MapWorkers::Picture p = workers.picture(plan.cells[i], camera, cell_px, cell_px, worker);
+      pictures[i] = std::move(p.image);
+      cell_ledger.add(p.mesh_seconds, p.render_seconds, 0.0);
       workers.advance();
     });
   std::vector<std::array<int, 4>> rects;
@@ -80,17 +77,23 @@ void render_shape(const MapInputs& in,
   const mapping::RenderSettings& render = in.spec.render;
   const frep::render::Camera camera =
     mapping::plan_camera(plan, render, static_cast<double>(render.width) / render.height);
-  const mapping::Section section = workers.section(plan.still, 0);
-  const frep::render::Image picture = mapping::render_sample(
-    plan, section, plan.still, camera, render.width, render.height, render, workers.count());
-  write_png_file(out_dir / "shape.png", picture);
-  record.files.push_back({ { "file", "shape.png" },
+  const MapWorkers::Picture p =
+    workers.picture(plan.still, camera, render.width, render.height, 0, workers.count());
+  write_png_file(out_dir / "shape.png", p.image);
+  const bool raycast = render.method == mapping::RenderSettings::Method::Raycast;
+  nlohmann::json entry{ { "file", "shape.png" },
     { "kind", "shape" },
-    { "width", picture.width },
-    { "height", picture.height },
-    { "triangles", section.surface.cell_count() } });
-  record.stages.push_back(
-    { "shape", seconds_since(t0), std::to_string(section.surface.cell_count()) + " triangles" });
+    { "width", p.image.width },
+    { "height", p.image.height },
+    { "method", raycast ? "raycast" : "mesh" } };
+  if (!raycast)
+  {
+    entry["triangles"] = p.triangles;
+  }
+  record.files.push_back(entry);
+  record.stages.push_back({ "shape",
+    seconds_since(t0),
+    raycast ? std::string("ray-cast") : std::to_string(p.triangles) + " triangles" });
 }
 
 void draw_path(const MapInputs& in, MapWorkers& workers, const fs::path& out_dir, MapRecord& record)

@@ -122,6 +122,48 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
   return section;
 }
 
+MapWorkers::Picture MapWorkers::picture(const mapping::Sample& sample,
+  const frep::render::Camera& camera,
+  int width,
+  int height,
+  int worker,
+  int threads,
+  const frep::raycast::Floor* floor)
+{
+  Picture p;
+  const mapping::RenderSettings& settings = inputs_.spec.render;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (settings.method == mapping::RenderSettings::Method::Raycast)
+  {
+    mapping::RaycastOptions ro;
+    ro.threads = threads;
+    ro.cancel = [] { return InterruptGuard::interrupted(); };
+    ro.floor = floor;
+    mapping::RaycastPicture r = mapping::raycast_sample(
+      *inputs_.model, inputs_.parameters, inputs_.plan, sample, camera, width, height, ro);
+    if (InterruptGuard::interrupted() || r.error == "cancelled")
+    {
+      throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
+    }
+    if (!r.ok())
+    {
+      throw UserError(sample.label + ": " + r.error);
+    }
+    p.image = std::move(r.image);
+    p.render_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return p;
+  }
+  const mapping::Section s = section(sample, worker);
+  const auto t1 = std::chrono::steady_clock::now();
+  p.image =
+    mapping::render_sample(inputs_.plan, s, sample, camera, width, height, settings, threads);
+  p.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
+  p.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  p.triangles = s.surface.cell_count();
+  return p;
+}
+
 void MapWorkers::parallel(std::size_t count, const std::function<void(std::size_t, int)>& body)
 {
   std::atomic<std::size_t> next{ 0 };

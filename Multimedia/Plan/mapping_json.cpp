@@ -89,6 +89,14 @@ constexpr Name<RenderSettings::ColourSource> colour_sources[] = {
   { "uniform", RenderSettings::ColourSource::Uniform },
   { "attributes", RenderSettings::ColourSource::Attributes },
 };
+constexpr Name<RenderSettings::Method> render_methods[] = {
+  { "mesh", RenderSettings::Method::Mesh },
+  { "raycast", RenderSettings::Method::Raycast },
+};
+constexpr Name<RenderSettings::Scene> render_scenes[] = {
+  { "page", RenderSettings::Scene::Page },
+  { "floor", RenderSettings::Scene::Floor },
+};
 
 template<typename E, std::size_t N>
 std::string name_of(const Name<E> (&names)[N], E value)
@@ -1133,7 +1141,9 @@ void read_render(Reader& r, const Json& doc, RenderSettings& rs)
                             "elevation",
                             "inset",
                             "colour_source",
-                            "view_box" }))
+                            "view_box",
+                            "method",
+                            "scene" }))
   {
     return;
   }
@@ -1159,6 +1169,16 @@ void read_render(Reader& r, const Json& doc, RenderSettings& rs)
     rs.colour_source,
     [&](const Json& v, const std::string& p)
     { return r.choice(v, p, "colour source", colour_sources); });
+  optional_key(*g,
+    "method",
+    "render",
+    rs.method,
+    [&](const Json& v, const std::string& p) { return r.choice(v, p, "method", render_methods); });
+  optional_key(*g,
+    "scene",
+    "render",
+    rs.scene,
+    [&](const Json& v, const std::string& p) { return r.choice(v, p, "scene", render_scenes); });
 }
 
 // "audio": sample_rate.
@@ -1394,7 +1414,9 @@ std::string save_mapping(const Spec& spec)
     { "azimuth", rs.azimuth },
     { "elevation", rs.elevation },
     { "inset", rs.inset },
-    { "colour_source", name_of(colour_sources, rs.colour_source) } };
+    { "colour_source", name_of(colour_sources, rs.colour_source) },
+    { "method", name_of(render_methods, rs.method) },
+    { "scene", name_of(render_scenes, rs.scene) } };
   if (rs.view_box)
   {
     doc["render"]["view_box"] = *rs.view_box;

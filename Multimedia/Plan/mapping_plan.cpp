@@ -249,6 +249,7 @@ public:
     check_world();
     check_spreadsheet();
     check_animation();
+    check_render();
     check_channel_values();
     if (result_.ok())
     {
@@ -543,6 +544,31 @@ private:
   }
 
   // --- animation ------------------------------------------------------------------------
+
+  // The ray caster's needs (an affine world mapping) and the floor scene's (ray-cast, two
+  // dynamic coordinates).
+  void check_render()
+  {
+    const RenderSettings& rs = spec_.render;
+    std::string why;
+    if (rs.method == RenderSettings::Method::Raycast && !world_is_affine(plan(), &why))
+    {
+      error("render.method", "\"raycast\" " + why + "; use \"mesh\"");
+    }
+    if (rs.scene == RenderSettings::Scene::Floor)
+    {
+      if (rs.method != RenderSettings::Method::Raycast)
+      {
+        error("render.scene", "the \"floor\" scene is ray-cast: set render.method to \"raycast\"");
+      }
+      if (plan().dynamic_coordinates.size() != 2)
+      {
+        error("render.scene",
+          "the \"floor\" scene is the plane of two dynamic coordinates; the mapping has " +
+            std::to_string(plan().dynamic_coordinates.size()));
+      }
+    }
+  }
 
   void check_animation()
   {
@@ -1046,6 +1072,35 @@ std::string format_errors(const std::vector<PlanError>& errors)
     text += (e.place.empty() ? e.message : e.place + ": " + e.message) + "\n";
   }
   return text;
+}
+
+bool world_is_affine(const Plan& plan, std::string* why)
+{
+  const auto fail = [&](const std::string& text)
+  {
+    if (why)
+    {
+      *why = text;
+    }
+    return false;
+  };
+  if (plan.world_coordinates[2] < 0)
+  {
+    return fail("draws 3-D sections (the mapping has two world coordinates)");
+  }
+  if (plan.system != WorldSystem::Cartesian)
+  {
+    return fail("needs the cartesian world system (this one bends space)");
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const Curve& c = plan.world_curves[k];
+    if (!(c.kind == Curve::Kind::Linear || (c.kind == Curve::Kind::Power && c.exponent == 1.0)))
+    {
+      return fail("needs linear world curves (world axis " + std::to_string(k) + " has a curve)");
+    }
+  }
+  return true;
 }
 
 PlanResult make_plan(const Spec& spec, const ModelCoordinates& model)

@@ -124,6 +124,11 @@ struct PlanResult
   bool ok() const { return errors.empty(); }
 };
 
+/// Whether the plan's model -> world mapping is affine (three world coordinates, the cartesian
+/// system, linear world curves): what the ray caster needs. If not, `why` says why (a phrase
+/// that follows "the ray caster").
+bool world_is_affine(const Plan& plan, std::string* why = nullptr);
+
 /// Resolves `spec` against the model's coordinates: every coordinate must be mapped (world,
 /// dynamic, spreadsheet or fixed), world axes distinct and 2 or 3 of them, ranges of non-zero
 /// width, frames >= 1, a path with >= 2 points over exactly the dynamic coordinates, ...

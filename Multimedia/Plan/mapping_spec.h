@@ -201,6 +201,25 @@ struct RenderSettings
     Attributes,
   };
   ColourSource colour_source = ColourSource::Uniform;
+  /// How cells and frames are drawn (JSON "method"): Mesh = each section meshed on the world
+  /// grid and rasterised; Raycast = drawn by rays from the function itself (no mesh: no facets,
+  /// no detail lost below the grid; needs the cartesian system and linear world curves).
+  enum class Method
+  {
+    Mesh,
+    Raycast,
+  };
+  Method method = Method::Mesh;
+  /// What a frame shows around the section (JSON "scene"): Page = the section in the middle of
+  /// the background (with the inset if `inset`); Floor = the paper's Fig. 8: the plane of the
+  /// two dynamic coordinates as a checkerboard floor (the spreadsheet's squares), the path drawn
+  /// on it, the section standing on it at its point with its shadow (ray-cast frames only).
+  enum class Scene
+  {
+    Page,
+    Floor,
+  };
+  Scene scene = Scene::Page;
 
   friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
 };

@@ -1,0 +1,214 @@
+#include "render_command.h"
+
+#include "atomic_output.h"
+#include "coordinate_mapping.h"
+#include "interrupt_guard.h"
+#include "mesh_writers/mesh_format.h"
+#include "model_loading.h"
+#include "number_format.h"
+#include "sampling_grid.h"
+#include "section_writers/png_writer.h"
+#include "user_error.h"
+
+#include "Raycast/raycast.h"
+#include "Render/camera.h"
+#include "Render/image.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace frepkit
+{
+namespace
+{
+
+std::array<float, 3> linear_rgb(const std::vector<double>& srgb, const char* option)
+{
+  if (srgb.size() != 3)
+  {
+    throw UserError(std::string(option) + " needs 3 numbers r,g,b in 0..1");
+  }
+  for (double c : srgb)
+  {
+    if (!(c >= 0.0 && c <= 1.0))
+    {
+      throw UserError(std::string(option) + ": every component must be in 0..1");
+    }
+  }
+  const frep::render::Rgba c = frep::render::srgb(srgb[0], srgb[1], srgb[2]);
+  return { c.r, c.g, c.b };
+}
+
+} // namespace
+
+CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
+{
+  CLI::App* cmd = app.add_subcommand("render",
+    "One picture of a 3-D cross-section drawn directly from the function by rays (no mesh): "
+    "fix the other coordinates by name, the 3 free ones are the box's axes; .png output.");
+  cmd->add_option("model", options.model, "Model file (.hf or .vm)")->required();
+  cmd
+    ->add_option("-o,--output",
+      options.output,
+      "The picture (.png; written under a temporary name, renamed when complete)")
+    ->required();
+  cmd->add_option("--fix", options.fix, "Fixed coordinates, e.g. x4=0.5,x5=0.25")->delimiter(',');
+  cmd
+    ->add_option("--free",
+      options.free,
+      "The 3 free coordinates in axis order (default: those not fixed, in increasing order)")
+    ->delimiter(',');
+  cmd->add_option("--object", options.object, "Object; default: my_model, else the first");
+  cmd->add_option("-a,--parameters", options.parameters, "Values of a[1], a[2], ...")
+    ->delimiter(',');
+  cmd
+    ->add_option("--box",
+      options.box,
+      "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax (default -10..10 on each "
+      "axis); the solid is cut by it")
+    ->delimiter(',');
+  cmd->add_option("--size", options.size, "Picture width,height in pixels (default 800,600)")
+    ->delimiter(',')
+    ->expected(2);
+  cmd
+    ->add_option("--view",
+      options.view,
+      "Camera azimuth,elevation in degrees (default 35,25; azimuth 0 looks along +y)")
+    ->delimiter(',')
+    ->expected(2);
+  cmd->add_option("--colour", options.colour, "Shape colour r,g,b in 0..1 (sRGB)")
+    ->delimiter(',');
+  cmd->add_option("--background", options.background, "Background r,g,b in 0..1 (sRGB)")
+    ->delimiter(',');
+  cmd->add_option("--supersample", options.supersample, "Rays per pixel along each axis (1..4)")
+    ->capture_default_str()
+    ->check(CLI::Range(1, 4));
+  cmd->add_flag("--floor", options.floor, "A checkerboard floor under the box, with the shadow");
+  cmd->add_flag("--shadows", options.shadows, "The shape's shadows on itself");
+  cmd->add_option("-j,--threads", options.threads, "Worker threads (0 = all cores)")
+    ->capture_default_str()
+    ->check(CLI::Range(0, 1024));
+  cmd->add_flag("-q,--quiet", options.quiet, "No report");
+  add_user_input_options(cmd, options.user);
+  return cmd;
+}
+
+int run_render(const RenderOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if (lower_extension(options.output) != ".png")
+  {
+    throw UserError(options.output + ": frepkit render writes .png pictures");
+  }
+  if (options.size.size() != 2 || options.size[0] < 1 || options.size[1] < 1 ||
+      options.size[0] > 16384 || options.size[1] > 16384)
+  {
+    throw UserError("--size: width,height from 1 to 16384");
+  }
+  if (options.view.size() != 2 || !std::isfinite(options.view[0]) ||
+      !std::isfinite(options.view[1]))
+  {
+    throw UserError("--view: azimuth,elevation as two finite numbers of degrees");
+  }
+  const std::array<float, 3> colour = linear_rgb(options.colour, "--colour");
+  const std::array<float, 3> background = linear_rgb(options.background, "--background");
+
+  const LoadedProgram loaded = load_program(options.model, options.user);
+  require_parsed(loaded);
+  const int object_index = choose_object(loaded, options.object);
+  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
+  warn_extra_parameters(object, options.parameters.size());
+  const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
+  if (mapping.free.size() != 3)
+  {
+    throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +
+                    std::to_string(mapping.free.size()) + " are free)");
+  }
+  const frep::mesh::Grid grid = make_grid(options.box, {}, 3);
+  const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
+
+  frep::raycast::Shape shape;
+  shape.tape = model->specialise(mapping.specialisation(options.parameters));
+  for (int k = 0; k < 3; ++k)
+  {
+    shape.box[k] = { grid.lo[k], grid.hi[k] };
+  }
+  shape.colour = colour;
+  const int width = options.size[0], height = options.size[1];
+  std::array<double, 3> lo{ grid.lo[0], grid.lo[1], grid.lo[2] };
+  std::array<double, 3> hi{ grid.hi[0], grid.hi[1], grid.hi[2] };
+
+  frep::raycast::Floor floor;
+  if (options.floor)
+  {
+    // Under the box, a little wider than it: 8 x 8 squares.
+    const double span = 1.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    floor.height = lo[2];
+    floor.square = span / 8.0;
+    floor.columns = floor.rows = 8;
+    floor.origin = { 0.5 * (lo[0] + hi[0]) - 0.5 * span, 0.5 * (lo[1] + hi[1]) - 0.5 * span };
+    lo[0] = floor.origin[0];
+    lo[1] = floor.origin[1];
+    hi[0] = floor.origin[0] + span;
+    hi[1] = floor.origin[1] + span;
+  }
+  const frep::render::Camera camera = frep::render::fit_box(lo,
+    hi,
+    static_cast<double>(width) / height,
+    options.view[0],
+    options.view[1]);
+
+  frep::raycast::Style style;
+  style.render.supersample = options.supersample;
+  style.render.threads = options.threads;
+  style.self_shadows = options.shadows;
+  frep::render::Image picture(width, height, { background[0], background[1], background[2], 1.0F });
+  const frep::raycast::Result r = frep::raycast::render(picture,
+    camera,
+    shape,
+    options.floor ? &floor : nullptr,
+    style,
+    nullptr,
+    [] { return InterruptGuard::interrupted(); });
+  InterruptGuard::throw_if_interrupted();
+  if (!r.ok())
+  {
+    throw UserError(options.model + ": " + r.error);
+  }
+  {
+    AtomicOutput out(options.output);
+    write_png(out.stream(), width, height, frep::render::to_rgb8(picture));
+    out.commit();
+  }
+  if (!options.quiet)
+  {
+    const frep::raycast::Statistics& s = r.statistics;
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char line[320];
+    std::snprintf(line,
+      sizeof line,
+      "frepkit render: %s (%s) -> %s, %dx%d, %zu rays (%zu in the box, %zu hits), %zu interval "
+      "and %zu point evaluations, ray casting %.3f s, total %.3f s\n",
+      object.name.c_str(),
+      mapping.free_names().c_str(),
+      options.output.c_str(),
+      width,
+      height,
+      s.rays,
+      s.rays_in_box,
+      s.hits,
+      s.interval_evaluations,
+      s.point_evaluations,
+      s.seconds,
+      seconds);
+    std::cerr << line;
+  }
+  return 0;
+}
+
+} // namespace frepkit

@@ -1,0 +1,133 @@
+// Internal: the first root of F along every ray of a tile (see raycast.h, "How the first root is
+// found"). One tracer per thread: it owns its evaluators and the simplified tapes of the pieces
+// it is in.
+#pragma once
+
+#include "Raycast/raycast.h"
+#include "Raycast/view_rays.h"
+
+#include "Eval/batch_evaluator.h"
+#include "Eval/interval_evaluator.h"
+#include "Eval/point_evaluator.h"
+#include "Eval/tape_simplifier.h"
+#include "Eval/thread_pool.h"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace frep::raycast::detail
+{
+
+enum class HitKind : std::uint8_t
+{
+  None,
+  Surface, ///< F changes sign along the ray
+  Cap      ///< the ray enters the box inside the solid: the box's face
+};
+
+struct Hit
+{
+  double lambda = std::numeric_limits<double>::infinity(); ///< depth (ViewRays)
+  HitKind kind = HitKind::None;
+  std::uint8_t face = 0; ///< Cap: the box face (view_rays.h, entry_face)
+};
+
+struct TraceOptions
+{
+  /// March step along a ray, in footprints (the world width of a sample at that depth).
+  double step = 0.5;
+  /// Refinement stops when the root is bracketed to this many footprints.
+  double tolerance = 1e-3;
+  /// A single ray's ambiguous stretch is marched once it is at most this many footprints deep
+  /// (deeper: split in two, each half checked by intervals first).
+  double leaf_depth = 2.0;
+  /// A piece whose open rays need at most this many march steps in all is marched without
+  /// an interval evaluation (which costs about as much as 20 point evaluations).
+  double march_budget = 24.0;
+  /// Simplify the tape per piece of at least this many samples (0: never).
+  int simplify_area = 16;
+  /// Depth below which nothing is searched (perspective: the near plane).
+  double from = 0.0;
+};
+
+class PieceTracer
+{
+public:
+  PieceTracer(std::shared_ptr<const Tape> tape,
+    const std::array<Interval, 3>& box,
+    const ViewRays& view,
+    const TraceOptions& options);
+
+  /// The hits of samples [x0, x1) x [y0, y1), row-major into `hits` ((x1-x0) * (y1-y0)).
+  /// `active`, when given (same layout), says which samples to trace; the others get no hit
+  /// and cost nothing, while the traced ones share the tile's pieces.
+  void trace_tile(int x0, int y0, int x1, int y1, std::span<Hit> hits,
+    const unsigned char* active = nullptr);
+
+  /// Counters since construction (rays, rays_in_box, hits, interval and point evaluations).
+  const Statistics& statistics() const { return stats_; }
+
+private:
+  struct Level
+  {
+    std::shared_ptr<const Tape> tape;
+    IntervalEvaluator interval;
+    PointEvaluator point;
+    std::unique_ptr<BatchEvaluator> batch; // made when the level marches
+    std::vector<Choice> choices;
+    bool simplifiable = false;
+    // Simplifications tried from this level and how many paid: a tape whose pieces never
+    // simplify (R-function blends) stops paying for the attempt.
+    int attempts = 0;
+    int successes = 0;
+    bool worth_trying() const { return simplifiable && (attempts < 16 || successes * 8 >= attempts); }
+    explicit Level(std::shared_ptr<const Tape> t);
+  };
+  struct Ray
+  {
+    Vec3 o{}, d{};
+    double in = 1.0, out = 0.0;                                    ///< inside the box
+    double outside = -std::numeric_limits<double>::infinity(); ///< a depth known outside
+    bool done = true;
+  };
+
+  void piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
+  double march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const;
+  void solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
+  /// Marches the rays `which` (indices into the tile) over [l0, l1], all steps in one batch.
+  void march(std::span<const std::size_t> which, double l0, double l1, Level& level);
+  /// F at depth lambda of the ray (the point clamped into the box, where the tapes are exact).
+  double value(const Ray& ray, double lambda, Level& level);
+  /// The root between a depth outside and one inside (values known or not).
+  double refine(const Ray& ray, double outside, double inside, Level& level);
+  double refine(const Ray& ray, double outside, double f_out, double inside, double f_in,
+    Level& level);
+  void set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind);
+
+  std::array<Interval, 3> box_;
+  const ViewRays& view_;
+  TraceOptions options_;
+  Level root_;
+  std::shared_ptr<ThreadPool> caller_only_; // the tracer runs on its caller's thread
+  TapeSimplifier simplifier_;
+  struct March
+  {
+    std::size_t ray;
+    double start, end;
+    int steps;
+    std::size_t first; // its first value in values_
+  };
+  std::vector<March> marches_;
+  std::vector<double> xs_, ys_, zs_, values_;
+  Statistics stats_;
+  // The current tile.
+  int tx0_ = 0, ty0_ = 0, tw_ = 0;
+  std::vector<Ray> rays_;
+  Hit* hits_ = nullptr;
+  std::size_t open_ = 0; // rays of the tile still searching
+};
+
+} // namespace frep::raycast::detail

@@ -1,0 +1,124 @@
+// Direct rendering of an FRep solid, without meshing: every picture sample casts a ray and finds
+// the first point where F >= 0, robustly for any FRep (not only distance fields), then shades it
+// with the gradient's normal under the same camera and lights as the mesh renderer
+// (Render/mesh_renderer.h). Plain C++: no VTK, no OpenGL, no display.
+//
+// How the first root is found (and why it misses nothing the picture can show):
+//  1. The picture is cut into tiles of samples. A tile's rays between two depths fill a convex
+//     frustum piece; its model-space bounding box (the hull of its eight corners: the world
+//     mapping is affine) goes to the interval evaluator. A piece where F < 0 for sure is empty
+//     for all its rays at once; a piece where F >= 0 for sure is solid (its rays hit at their
+//     entry). Ambiguous pieces split — in depth while they are deeper than wide, else in four on
+//     the screen — front to back, so a ray stops at its first hit.
+//  2. A single ray's ambiguous stretch, once no longer than a few footprints (the width of a
+//     sample at that depth), is sampled at steps of a quarter footprint: a part thinner than
+//     that is below the picture's resolution. The first sign change is refined by bisection to
+//     a millionth of the footprint.
+// Every value comes from the engine's exact evaluators; intervals only decide where to look,
+// never what F is, so a pruned search finds the same roots as a brute-force march at the same
+// step would.
+//
+// The picture is the same bit for bit for any number of threads: tiles are independent and each
+// sample's search depends only on its own ray.
+#pragma once
+
+#include "Render/camera.h"
+#include "Render/image.h"
+#include "Render/mesh_renderer.h"
+
+#include "Compiler/tape.h"
+#include "Eval/interval.h"
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace frep::raycast
+{
+
+/// The surface colour at a hit: the model-space point and the tape's outputs there (F, s[1..]).
+/// Called from several threads at once: it must not change shared state. Returns linear RGB.
+using ColourFunction =
+  std::function<std::array<float, 3>(const std::array<double, 3>& model_point,
+    std::span<const double> outputs)>;
+
+/// The solid to draw: F >= 0 inside, cut by its model box (the cut faces are drawn as caps, as
+/// the mesher closes its surfaces), placed in the world by an affine map.
+struct Shape
+{
+  /// Three inputs (model coordinates, in the order of `box`); outputs F and optionally s[].
+  std::shared_ptr<const Tape> tape;
+  std::array<Interval, 3> box{};
+  /// Model -> world, row-major 3 x 4: w = M m + t with M = columns 0..2, t = column 3. Must be
+  /// invertible. Default: identity.
+  std::array<double, 12> to_world{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0 };
+  std::array<float, 3> colour{ 0.8F, 0.8F, 0.8F }; ///< linear; when `colour_function` is empty
+  ColourFunction colour_function;
+  double opacity = 1.0; ///< 0..1: composited over what is behind (back surfaces are not seen)
+};
+
+/// A checkerboard floor: the plane z = height of the world, squares of `square` world units
+/// starting at `origin`, `columns` x `rows` of them (the rest of the plane is not drawn), with
+/// an optional polyline drawn on it (world x, y pairs) and a marked point.
+struct Floor
+{
+  double height = 0.0;
+  std::array<double, 2> origin{ 0.0, 0.0 };
+  double square = 1.0;
+  int columns = 8;
+  int rows = 8;
+  std::array<float, 3> light{ 0.92F, 0.92F, 0.90F }; ///< linear colours of the two squares
+  std::array<float, 3> dark{ 0.35F, 0.37F, 0.42F };
+  std::vector<double> path;        ///< x0, y0, x1, y1, ... in world units
+  double path_width = 0.1;         ///< world units
+  std::array<float, 3> path_colour{ 0.80F, 0.10F, 0.05F };
+  bool shadows = true; ///< the shape's shadow from the key light (the first light)
+};
+
+struct Style
+{
+  /// The mesh renderer's lights, ambient, specular, shininess, supersample (per axis, 1..4)
+  /// and threads (0 = all cores), so that ray-cast and meshed pictures match.
+  render::RenderStyle render;
+  /// The shape casts shadows on itself (one more ray per lit sample towards the key light).
+  bool self_shadows = false;
+  double shadow_factor = 0.35; ///< light left in a shadow, 0..1
+};
+
+struct Statistics
+{
+  std::size_t rays = 0;                 ///< primary rays (one per pixel, more at edges)
+  std::size_t edge_pixels = 0;          ///< pixels that got supersample^2 rays
+  std::size_t rays_in_box = 0;          ///< ... that meet the model box
+  std::size_t hits = 0;                 ///< ... that meet the solid
+  std::size_t interval_evaluations = 0; ///< frustum pieces and ray stretches
+  std::size_t point_evaluations = 0;    ///< march steps and bisection
+  std::size_t shadow_rays = 0;
+  double seconds = 0.0;
+};
+
+struct Result
+{
+  std::string error; ///< non-empty: bad input, nothing drawn
+  Statistics statistics;
+  bool ok() const { return error.empty(); }
+};
+
+/// Draws `shape` (and the floor, if given) over `target` (its size is the picture's size):
+/// pixels neither covers keep the target's colour, edges blend with it. `depth`, when given,
+/// receives per output pixel the world distance from the eye along the view direction of the
+/// nearest sample drawn (infinity where nothing was). `cancel`, when given, is polled per tile
+/// (return true to stop: the picture is then incomplete and the result says "cancelled").
+Result render(render::Image& target,
+  const render::Camera& camera,
+  const Shape& shape,
+  const Floor* floor = nullptr,
+  const Style& style = {},
+  std::vector<float>* depth = nullptr,
+  const std::function<bool()>& cancel = {});
+
+} // namespace frep::raycast

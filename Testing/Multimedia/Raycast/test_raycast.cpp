@@ -1,0 +1,236 @@
+// The ray caster against analytic shapes: a sphere's silhouette (orthographic and perspective)
+// and its Lambert shading against the exact projection; a shell thinner than a mesher's grid
+// cell is found; an object behind the camera or outside the box leaves the picture empty; the
+// box's cut faces are drawn as caps; the depth of the nearest point; the same picture for 1
+// and 2 threads (floor and shadows included); bad input refused.
+#include "Raycast/raycast.h"
+
+#include "Compiler/model.h"
+#include "Language/ast.h"
+#include "Language/parser.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace
+{
+
+using frep::Interval;
+namespace rc = frep::raycast;
+namespace render = frep::render;
+
+std::shared_ptr<const frep::Tape> tape_of(const std::string& body, int dimension = 3)
+{
+  const std::string text = "my_model(x[" + std::to_string(dimension) + "], a[1]) { my_model = " +
+                           body + "; }";
+  const frep::ParseResult parsed = frep::parse_program(text, "<test>");
+  EXPECT_TRUE(parsed.ok());
+  const int object = frep::ast::select_default_object(*parsed.program);
+  return frep::Model::compile(parsed.program, object).model->tape();
+}
+
+rc::Shape sphere_shape(double radius = 1.0)
+{
+  rc::Shape s;
+  s.tape = tape_of(std::to_string(radius * radius) + " - x[1]^2 - x[2]^2 - x[3]^2");
+  s.box = { Interval{ -2, 2 }, Interval{ -2, 2 }, Interval{ -2, 2 } };
+  s.colour = { 1.0F, 1.0F, 1.0F };
+  return s;
+}
+
+// One light from the camera, no ambient, no highlight: a pixel's value is n . l.
+rc::Style lambert_style(int supersample = 1, int threads = 1)
+{
+  rc::Style style;
+  style.render.lights = { render::Light{ { 0.0, 0.0, 1.0 }, 1.0, 0.0 } };
+  style.render.ambient = 0.0;
+  style.render.specular = 0.0;
+  style.render.supersample = supersample;
+  style.render.threads = threads;
+  return style;
+}
+
+render::Camera ortho_camera(double scale)
+{
+  render::Camera camera;
+  camera.position = { 0.0, -10.0, 0.0 };
+  camera.focal_point = { 0.0, 0.0, 0.0 };
+  camera.view_up = { 0.0, 0.0, 1.0 };
+  camera.orthographic = true;
+  camera.parallel_scale = scale;
+  return camera;
+}
+
+int covered(const render::Image& image)
+{
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+  {
+    for (int x = 0; x < image.width; ++x)
+    {
+      n += image.at(x, y).a > 0.5F ? 1 : 0;
+    }
+  }
+  return n;
+}
+
+TEST(Raycast, OrthographicSphereSilhouetteAndShading)
+{
+  render::Image image(200, 200);
+  const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  // Radius 1 world unit = 50 pixels (100 pixels per 2 units of parallel scale).
+  const double expected = std::numbers::pi * 50.0 * 50.0;
+  EXPECT_NEAR(covered(image), expected, 0.01 * expected);
+  // Lambert: n . v = sqrt(1 - rho^2) at distance rho (in radii) from the centre.
+  for (const int px : { 100, 120, 130, 140 })
+  {
+    const double rho = (px + 0.5 - 100.0) / 50.0;
+    EXPECT_NEAR(image.at(px, 100).r, std::sqrt(1.0 - rho * rho), 2e-3) << "pixel " << px;
+  }
+  EXPECT_EQ(image.at(5, 5).a, 0.0F);
+  EXPECT_EQ(r.statistics.rays, 200u * 200u);
+  EXPECT_GT(r.statistics.hits, 7000u);
+}
+
+TEST(Raycast, PerspectiveSilhouetteIsTheExactProjection)
+{
+  render::Camera camera;
+  camera.position = { 0.0, -6.0, 0.0 };
+  camera.view_angle_deg = 30.0;
+  render::Image image(301, 301);
+  const rc::Result r = rc::render(image, camera, sphere_shape(), nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  // The silhouette's half angle is asin(r / d); in pixels, focal * tan(asin(1/6)).
+  const double focal = 0.5 * 301 / std::tan(15.0 * std::numbers::pi / 180.0);
+  const double radius_px = focal * std::tan(std::asin(1.0 / 6.0));
+  int row = 0;
+  for (int x = 0; x < image.width; ++x)
+  {
+    row += image.at(x, 150).a > 0.5F ? 1 : 0;
+  }
+  EXPECT_NEAR(row, 2.0 * radius_px, 2.0);
+}
+
+TEST(Raycast, DepthIsTheNearestPoint)
+{
+  render::Image image(101, 101);
+  std::vector<float> depth;
+  const rc::Result r =
+    rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style(), &depth);
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(depth.size(), 101u * 101u);
+  // The eye is 10 units from the centre: the nearest point is at depth 9.
+  EXPECT_NEAR(depth[50 * 101 + 50], 9.0, 1e-3);
+  EXPECT_TRUE(std::isinf(depth[0]));
+}
+
+TEST(Raycast, ThinShellBelowTheMeshGridIsFound)
+{
+  // A shell 0.02 thick: thinner than a cell of a 128^3 grid over the box (0.031), and than a
+  // picture sample (0.04 at this size), is found on every ray that crosses it.
+  rc::Shape shell;
+  shell.tape = tape_of("0.01 - abs(sqrt(x[1]^2 + x[2]^2 + x[3]^2) - 1)");
+  shell.box = { Interval{ -2, 2 }, Interval{ -2, 2 }, Interval{ -2, 2 } };
+  render::Image image(100, 100);
+  const rc::Result r = rc::render(image, ortho_camera(2.0), shell, nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  const double expected = std::numbers::pi * 25.25 * 25.25;
+  EXPECT_NEAR(covered(image), expected, 0.02 * expected);
+}
+
+TEST(Raycast, BehindTheCameraOrOutsideTheBoxIsEmpty)
+{
+  render::Camera away;
+  away.position = { 0.0, -6.0, 0.0 };
+  away.focal_point = { 0.0, -12.0, 0.0 }; // looking away from the sphere
+  render::Image image(64, 64);
+  rc::Result r = rc::render(image, away, sphere_shape(), nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(covered(image), 0);
+  EXPECT_EQ(r.statistics.hits, 0u);
+
+  rc::Shape outside = sphere_shape();
+  outside.tape = tape_of("1 - (x[1] - 5)^2 - x[2]^2 - x[3]^2"); // centred outside the box
+  render::Image image2(64, 64);
+  r = rc::render(image2, ortho_camera(8.0), outside, nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(covered(image2), 0);
+}
+
+TEST(Raycast, TheBoxCutsTheSolidWithCaps)
+{
+  // Everything is inside: the picture is the box itself, its front face lit head-on.
+  rc::Shape all;
+  all.tape = tape_of("1 + 0 * x[1]");
+  all.box = { Interval{ -1, 1 }, Interval{ -1, 1 }, Interval{ -1, 1 } };
+  all.colour = { 1.0F, 1.0F, 1.0F };
+  render::Image image(100, 100);
+  const rc::Result r = rc::render(image, ortho_camera(2.0), all, nullptr, lambert_style());
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(covered(image), 50 * 50);
+  EXPECT_NEAR(image.at(50, 50).r, 1.0F, 1e-6);
+}
+
+TEST(Raycast, SameImageForOneAndTwoThreads)
+{
+  render::Camera camera;
+  camera.position = { 4.0, -6.0, 3.0 };
+  rc::Shape shape;
+  shape.tape = tape_of("max(1 - x[1]^2 - x[2]^2 - x[3]^2, 0.3 - (x[1] - 1)^2 - x[2]^2 - x[3]^2)");
+  shape.box = { Interval{ -2, 2 }, Interval{ -2, 2 }, Interval{ -1, 2 } };
+  rc::Floor floor;
+  floor.height = -1.0;
+  floor.origin = { -3.0, -3.0 };
+  floor.square = 1.0;
+  floor.columns = floor.rows = 6;
+  floor.path = { -2.0, -2.0, 2.0, 1.0, 2.0, 2.0 };
+  render::Image one(160, 120), two(160, 120);
+  const rc::Result r1 = rc::render(one, camera, shape, &floor, [] {
+    rc::Style s;
+    s.render.threads = 1;
+    s.self_shadows = true;
+    return s;
+  }());
+  const rc::Result r2 = rc::render(two, camera, shape, &floor, [] {
+    rc::Style s;
+    s.render.threads = 2;
+    s.self_shadows = true;
+    return s;
+  }());
+  ASSERT_TRUE(r1.ok() && r2.ok()) << r1.error << r2.error;
+  EXPECT_EQ(one.rgba, two.rgba);
+  EXPECT_GT(r1.statistics.shadow_rays, 0u);
+  // The floor is drawn (opaque pixels far from the shape) and the shadow darkens part of it.
+  EXPECT_GT(covered(one), 160 * 120 / 4);
+}
+
+TEST(Raycast, BadInputIsRefused)
+{
+  render::Image image(8, 8);
+  rc::Shape flat;
+  flat.tape = tape_of("1 - x[1]^2 - x[2]^2", 2);
+  flat.box = { Interval{ -1, 1 }, Interval{ -1, 1 }, Interval{ -1, 1 } };
+  EXPECT_NE(rc::render(image, ortho_camera(1.0), flat).error.find("3 inputs"), std::string::npos);
+  rc::Shape singular = sphere_shape();
+  singular.to_world = { 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0 };
+  EXPECT_NE(rc::render(image, ortho_camera(1.0), singular).error.find("singular"), std::string::npos);
+  rc::Shape bad_box = sphere_shape();
+  bad_box.box[1] = Interval{ 1, -1 };
+  EXPECT_FALSE(rc::render(image, ortho_camera(1.0), bad_box).ok());
+  render::Image empty;
+  EXPECT_FALSE(rc::render(empty, ortho_camera(1.0), sphere_shape()).ok());
+}
+
+TEST(Raycast, CancelStopsTheWork)
+{
+  render::Image image(64, 64);
+  const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr,
+    lambert_style(), nullptr, [] { return true; });
+  EXPECT_EQ(r.error, "cancelled");
+}
+
+} // namespace

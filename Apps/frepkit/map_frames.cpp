@@ -152,8 +152,13 @@ void render_frames(const MapOptions& options,
   const bool resume = prepare_resume(options, in, frames);
   const mapping::Plan& plan = in.plan;
   const mapping::RenderSettings& render = in.spec.render;
+  const double aspect = static_cast<double>(render.width) / render.height;
+  // The paper's Fig. 8 (render.scene "floor"): the shape travels over the dynamic plane.
+  const bool on_floor = render.scene == mapping::RenderSettings::Scene::Floor;
+  const mapping::FloorScene scene =
+    on_floor ? mapping::make_floor_scene(plan, in.spec, aspect) : mapping::FloorScene{};
   const frep::render::Camera camera =
-    mapping::plan_camera(plan, render, static_cast<double>(render.width) / render.height);
+    on_floor ? scene.camera : mapping::plan_camera(plan, render, aspect);
   std::atomic<std::size_t> reused_count{ 0 };
   Ledger frame_ledger;
   workers.parallel(plan.frames.size(),
@@ -166,9 +171,9 @@ void render_frames(const MapOptions& options,
         workers.advance();
         return;
       }
-      const mapping::Sample& frame = plan.frames[k];
-      MapWorkers::Picture p =
-        workers.picture(frame, camera, render.width, render.height, worker);
+      const mapping::Sample frame = on_floor ? mapping::on_floor(scene, plan.frames[k]) : plan.frames[k];
+      MapWorkers::Picture p = workers.picture(
+        frame, camera, render.width, render.height, worker, 1, on_floor ? &scene.floor : nullptr);
       mapping::decorate_frame(p.image, plan, frame, render, workers.kit(worker));
       const auto w0 = Clock::now();
       write_png_file(path, p.image);

@@ -17,6 +17,7 @@
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
 #include "Render/image.h"
+#include "Scene/floor_scene.h"
 #include "Scene/pictures.h"
 #include "Scene/section_mesh.h"
 #include "Scene/section_raycast.h"

@@ -189,11 +189,12 @@ int run_render(const RenderOptions& options)
     const frep::raycast::Statistics& s = r.statistics;
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char line[320];
+    char line[480];
     std::snprintf(line,
       sizeof line,
       "frepkit render: %s (%s) -> %s, %dx%d, %zu rays (%zu in the box, %zu hits), %zu interval "
-      "and %zu point evaluations, ray casting %.3f s, total %.3f s\n",
+      "and %zu point evaluations, %zu edge pixels, ray casting %.3f s (shadow map %.3f s, "
+      "edges %.3f s), total %.3f s\n",
       object.name.c_str(),
       mapping.free_names().c_str(),
       options.output.c_str(),
@@ -204,7 +205,10 @@ int run_render(const RenderOptions& options)
       s.hits,
       s.interval_evaluations,
       s.point_evaluations,
+      s.edge_pixels,
       s.seconds,
+      s.shadow_seconds,
+      s.edge_seconds,
       seconds);
     std::cerr << line;
   }

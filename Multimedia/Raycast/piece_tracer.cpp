@@ -24,9 +24,11 @@ constexpr std::size_t kMaxMarchRays = 256;
 
 PieceTracer::PieceTracer(std::shared_ptr<const Tape> tape,
   const std::array<Interval, 3>& box,
+  const std::array<Interval, 3>& clip,
   const ViewRays& view,
   const TraceOptions& options)
-  : box_(box)
+  : model_box_(box)
+  , box_(clip)
   , view_(view)
   , options_(options)
   , root_(std::move(tape))
@@ -83,7 +85,14 @@ void PieceTracer::set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind)
   hit.kind = kind;
   if (kind == HitKind::Cap)
   {
-    hit.face = static_cast<std::uint8_t>(entry_face(ray.o, ray.d, lambda, box_));
+    // A cap only on a face of the model box; entering the clip box elsewhere inside the
+    // solid (which its construction rules out but rounding might not) is a surface point.
+    const int face = entry_face(ray.o, ray.d, lambda, box_);
+    const int k = face / 2;
+    const bool on_model_face =
+      face % 2 ? box_[k].hi == model_box_[k].hi : box_[k].lo == model_box_[k].lo;
+    hit.face = static_cast<std::uint8_t>(face);
+    hit.kind = on_model_face ? HitKind::Cap : HitKind::Surface;
   }
   ray.done = true;
   --open_;

@@ -56,8 +56,11 @@ struct TraceOptions
 class PieceTracer
 {
 public:
+  /// Rays search `clip` (a box around the solid inside the model box `box`, or `box` itself);
+  /// a ray entering `clip` inside the solid through a face of `box` hits a cap.
   PieceTracer(std::shared_ptr<const Tape> tape,
     const std::array<Interval, 3>& box,
+    const std::array<Interval, 3>& clip,
     const ViewRays& view,
     const TraceOptions& options);
 
@@ -107,7 +110,8 @@ private:
     Level& level);
   void set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind);
 
-  std::array<Interval, 3> box_;
+  std::array<Interval, 3> model_box_;
+  std::array<Interval, 3> box_; // where rays search
   const ViewRays& view_;
   TraceOptions options_;
   Level root_;

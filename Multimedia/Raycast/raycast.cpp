@@ -2,6 +2,7 @@
 
 #include "Raycast/piece_tracer.h"
 #include "Raycast/shadow_map.h"
+#include "Raycast/solid_bounds.h"
 #include "Raycast/surface_shading.h"
 #include "Raycast/view_rays.h"
 
@@ -81,11 +82,12 @@ std::string check_input(const render::Image& target, const Shape& shape, const F
 struct Worker
 {
   Worker(const Shape& shape,
+    const std::array<Interval, 3>& clip,
     const detail::ViewRays& pixels,
     const detail::ViewRays& samples,
     const detail::TraceOptions& options)
-    : tracer(shape.tape, shape.box, pixels, options)
-    , fine(shape.tape, shape.box, samples, options)
+    : tracer(shape.tape, shape.box, clip, pixels, options)
+    , fine(shape.tape, shape.box, clip, samples, options)
     , point(shape.tape)
     , gradient(shape.tape)
     , outputs(shape.tape->outputs.size())
@@ -334,11 +336,21 @@ Result render(render::Image& target,
     c.floor_index.emplace(*floor);
   }
   ThreadPool pool(style.render.threads);
-  if (!c.kit.lights.empty() && ((floor && floor->shadows) || style.self_shadows))
+  const detail::SolidBounds bounds = detail::solid_bounds(shape.tape, shape.box, 4);
+  result.statistics.interval_evaluations += bounds.interval_evaluations;
+  // With nothing inside the box, rays search an empty box outside it (none enters).
+  const std::array<Interval, 3> clip = bounds.empty
+    ? std::array<Interval, 3>{ Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 } }
+    : bounds.box;
+  if (!bounds.empty && !c.kit.lights.empty() && ((floor && floor->shadows) || style.self_shadows))
   {
-    // About one shadow-map sample per picture pixel over the shape's bounding sphere.
-    const int size = std::clamp(std::max(target.width, target.height), 256, 1536);
-    c.shadow.emplace(shape, c.map, c.kit.lights[0].l, size, pool, result.statistics);
+    // Half a picture's side over the shape's bounding sphere (the look-up is bilinear): the map
+    // is a picture of its own, traced like the camera's, and costs as much per sample.
+    const int size = std::clamp(std::max(target.width, target.height) / 2, 256, 768);
+    const auto t0 = std::chrono::steady_clock::now();
+    c.shadow.emplace(shape, clip, c.map, c.kit.lights[0].l, size, pool, result.statistics);
+    result.statistics.shadow_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
   detail::TraceOptions options;
@@ -349,7 +361,7 @@ Result render(render::Image& target,
     auto& w = workers[static_cast<std::size_t>(slot)];
     if (!w)
     {
-      w = std::make_unique<Worker>(shape, pixels, samples, options);
+      w = std::make_unique<Worker>(shape, clip, pixels, samples, options);
     }
     return *w;
   };
@@ -393,6 +405,7 @@ Result render(render::Image& target,
     });
 
   // 2. Edges: supersample x supersample rays per pixel, averaged like render::downsample.
+  const auto edge_start = std::chrono::steady_clock::now();
   if (ss > 1 && !cancelled)
   {
     const std::vector<std::uint32_t> edges = edge_pixels(first, seen, first_depth, pixels);
@@ -460,6 +473,8 @@ Result render(render::Image& target,
         }
       });
   }
+  result.statistics.edge_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - edge_start).count();
   for (const auto& w : workers)
   {
     if (w)

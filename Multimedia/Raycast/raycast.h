@@ -98,6 +98,8 @@ struct Statistics
   std::size_t interval_evaluations = 0; ///< frustum pieces and ray stretches
   std::size_t point_evaluations = 0;    ///< march steps and bisection
   std::size_t shadow_rays = 0;
+  double shadow_seconds = 0.0; ///< of which: the key light's shadow map
+  double edge_seconds = 0.0;   ///< ... the supersampled edge pixels
   double seconds = 0.0;
 };
 

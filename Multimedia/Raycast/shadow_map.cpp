@@ -18,8 +18,8 @@ double dot(const Vec3& a, const Vec3& b)
 
 } // namespace
 
-ShadowMap::ShadowMap(const Shape& shape, const Affine3& map, const Vec3& towards_light, int size,
-  ThreadPool& pool, Statistics& statistics)
+ShadowMap::ShadowMap(const Shape& shape, const std::array<Interval, 3>& clip, const Affine3& map,
+  const Vec3& towards_light, int size, ThreadPool& pool, Statistics& statistics)
   : size_(size)
   , depth_(static_cast<std::size_t>(size) * size, std::numeric_limits<double>::infinity())
 {
@@ -29,9 +29,9 @@ ShadowMap::ShadowMap(const Shape& shape, const Affine3& map, const Vec3& towards
   Vec3 hi{ -lo[0], -lo[1], -lo[2] };
   for (int c = 0; c < 8; ++c)
   {
-    const Vec3 w = map.point({ c & 1 ? shape.box[0].hi : shape.box[0].lo,
-      c & 2 ? shape.box[1].hi : shape.box[1].lo,
-      c & 4 ? shape.box[2].hi : shape.box[2].lo });
+    const Vec3 w = map.point({ c & 1 ? clip[0].hi : clip[0].lo,
+      c & 2 ? clip[1].hi : clip[1].lo,
+      c & 4 ? clip[2].hi : clip[2].lo });
     for (int k = 0; k < 3; ++k)
     {
       lo[k] = std::min(lo[k], w[k]);
@@ -69,7 +69,7 @@ ShadowMap::ShadowMap(const Shape& shape, const Affine3& map, const Vec3& towards
       auto& tracer = tracers[static_cast<std::size_t>(slot)];
       if (!tracer)
       {
-        tracer = std::make_unique<PieceTracer>(shape.tape, shape.box, view_, options);
+        tracer = std::make_unique<PieceTracer>(shape.tape, shape.box, clip, view_, options);
       }
       const int x0 = static_cast<int>(t % tiles_x) * kTile, y0 = static_cast<int>(t / tiles_x) * kTile;
       const int x1 = std::min(size, x0 + kTile), y1 = std::min(size, y0 + kTile);

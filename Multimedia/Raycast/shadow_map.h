@@ -17,8 +17,9 @@ class ShadowMap
 {
 public:
   /// The shape's box seen along -towards_light, `size` samples square.
-  ShadowMap(const Shape& shape, const Affine3& map, const Vec3& towards_light, int size,
-    ThreadPool& pool, Statistics& statistics);
+  /// The solid inside `clip` (see solid_bounds.h) seen along -towards_light.
+  ShadowMap(const Shape& shape, const std::array<Interval, 3>& clip, const Affine3& map,
+    const Vec3& towards_light, int size, ThreadPool& pool, Statistics& statistics);
 
   /// Fraction of the light that reaches world point p (0 in the shadow, 1 lit; bilinear
   /// between the four nearest samples, so shadow edges are smooth).

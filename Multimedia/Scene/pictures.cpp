@@ -267,7 +267,9 @@ void decorate_frame(render::Image& frame,
       text_colour_on(sample.background),
       { render::HAlign::Left, render::VAlign::Bottom });
   }
-  if (!settings.inset || plan.dynamic_coordinates.size() != 2 || plan.path_polyline.empty())
+  // The floor scene shows the plane itself: no inset then.
+  if (!settings.inset || settings.scene == RenderSettings::Scene::Floor ||
+      plan.dynamic_coordinates.size() != 2 || plan.path_polyline.empty())
   {
     return;
   }

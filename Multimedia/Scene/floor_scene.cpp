@@ -1,0 +1,126 @@
+#include "Scene/floor_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frep::mapping
+{
+namespace
+{
+
+// The spreadsheet's node values of coordinate `name`, if it has a spreadsheet channel.
+std::vector<double> spreadsheet_values(const Spec& spec, const std::string& name)
+{
+  for (const CoordinateMapping& m : spec.coordinates)
+  {
+    if (m.name != name)
+    {
+      continue;
+    }
+    for (const Channel& c : m.channels)
+    {
+      if (c.type == Channel::Type::Spreadsheet && c.values.size() >= 2)
+      {
+        return c.values;
+      }
+    }
+  }
+  return {};
+}
+
+// Squares along one plane axis: centred on the spreadsheet's node values when they are evenly
+// spaced (then square k is cell k), else 8 over the range. Returns {origin, size, count}.
+std::array<double, 3> squares_along(const Spec& spec, const std::string& name, Interval range)
+{
+  const std::vector<double> values = spreadsheet_values(spec, name);
+  if (values.size() >= 2)
+  {
+    const double step = values[1] - values[0];
+    bool even = step > 0.0;
+    for (std::size_t i = 2; i < values.size() && even; ++i)
+    {
+      even = std::abs((values[i] - values[i - 1]) - step) <= 1e-9 * std::abs(step);
+    }
+    if (even)
+    {
+      return { values.front() - 0.5 * step, step, static_cast<double>(values.size()) };
+    }
+  }
+  const double lo = std::min(range.lo, range.hi), hi = std::max(range.lo, range.hi);
+  return { lo, (hi - lo) / 8.0, 8.0 };
+}
+
+} // namespace
+
+FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
+{
+  FloorScene scene;
+  if (plan.dynamic_coordinates.size() != 2)
+  {
+    return scene;
+  }
+  const RenderSettings& settings = spec.render;
+  std::array<double, 3> lo, hi;
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
+    hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
+  }
+  // One square of the board is a little smaller than the shape's box, so that neighbouring
+  // cells' shapes would touch: the board reads as the spreadsheet laid flat.
+  const double shape_size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  const std::array<double, 3> u = squares_along(spec, plan.dynamic_coordinates[0], plan.path_plane[0]);
+  const std::array<double, 3> v = squares_along(spec, plan.dynamic_coordinates[1], plan.path_plane[1]);
+  const double world_square = 0.9 * shape_size;
+  // u runs along +x; v along -y, so that from the default camera (looking along +y) v grows
+  // towards the viewer, as the spreadsheet's rows grow down the page.
+  const double sx = world_square / u[1], sy = -world_square / v[1];
+  const double columns = u[2], rows = v[2];
+  scene.plane_to_floor = { -sx * (u[0] + 0.5 * columns * u[1]), sx, -sy * (v[0] + 0.5 * rows * v[1]), sy };
+  raycast::Floor& f = scene.floor;
+  f.height = lo[2];
+  f.square = world_square;
+  f.columns = static_cast<int>(columns);
+  f.rows = static_cast<int>(rows);
+  f.origin = { -0.5 * columns * world_square, -0.5 * rows * world_square };
+  f.path_width = 0.06 * world_square;
+  for (const std::vector<double>& p : plan.path_polyline)
+  {
+    if (p.size() >= 2)
+    {
+      f.path.push_back(scene.plane_to_floor[0] + sx * p[0]);
+      f.path.push_back(scene.plane_to_floor[2] + sy * p[1]);
+    }
+  }
+  // The shape's box stands on the floor by its bottom centre.
+  scene.shape_anchor = { 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), lo[2] };
+
+  const double height = hi[2] - lo[2];
+  const std::array<double, 3> board_lo{ f.origin[0], f.origin[1], f.height };
+  const std::array<double, 3> board_hi{
+    f.origin[0] + columns * world_square, f.origin[1] + rows * world_square, f.height + height
+  };
+  scene.camera = render::fit_box(
+    board_lo, board_hi, aspect, settings.azimuth, std::max(settings.elevation, 30.0), { 30.0, false, 0.95 });
+  scene.ok = true;
+  return scene;
+}
+
+Sample on_floor(const FloorScene& scene, const Sample& frame)
+{
+  Sample s = frame;
+  if (!scene.ok || frame.path_point.size() < 2)
+  {
+    return s;
+  }
+  const double x = scene.plane_to_floor[0] + scene.plane_to_floor[1] * frame.path_point[0];
+  const double y = scene.plane_to_floor[2] + scene.plane_to_floor[3] * frame.path_point[1];
+  const std::array<double, 3> t{ x - scene.shape_anchor[0], y - scene.shape_anchor[1], 0.0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    s.transform[4 * r + 3] += t[r]; // translation after the frame's own transform
+  }
+  return s;
+}
+
+} // namespace frep::mapping

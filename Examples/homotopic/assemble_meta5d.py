@@ -18,7 +18,9 @@ HEAD = """\
 --   exactly (the weights are exactly 0 and 1, and the key shapes are finite everywhere).
 -- Box: the common box [-10, 10]^3 of the four key shapes (each inside with a margin >= 1.35).
 -- Scale: every key shape has a median |grad F| of about 1 per unit on its surface (factors in
---   the headers of the four files: Cat 1.75, Robot 1, NiHon 1, Rob_let 1), so none dominates.
+--   the headers of the four files: Cat 1.75, Robot 1, NiHon 1, Rob_let 1) and is bounded the
+--   same way, 0.3 tanh(F / 0.3) inside and 0.15 tanh(F / 0.15) outside, so none dominates the
+--   blend (Documentation/mapping.md, "Normalised key shapes").
 -- Topology of the corners: Cat and Robot spheres (genus 0), NiHon one solid of genus 2,
 --   Rob_let five solids: 2 of genus 0 and 3 of genus 1.
 -- Objects: cat, robot, nihon, roblet (x[3]), meta5d (x[5]), my_model (x[5]) = meta5d: the

@@ -384,3 +384,53 @@ TEST(HomotopicModels, Meta5DMidCellsAreSolidsInsideTheBox)
     }
   }
 }
+
+// The key shapes are normalised alike (their headers): F in [-0.15, 0.3] everywhere in the box
+// (up to rounding: tanh reaches 1 in floating point), so that no shape's large values outweigh the others' in
+// the blend.
+TEST(HomotopicModels, KeyShapesAreBoundedAlike)
+{
+  for (const Corner& corner : kCorners)
+  {
+    const auto model = load(corner.file);
+    ASSERT_TRUE(model);
+    const std::vector<std::vector<double>> xyz = test_points(*model, 20000);
+    const std::vector<double> values = evaluate(model->tape(), xyz);
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    std::printf("%s: F in [%.4f, %.4f] at %zu points\n", corner.file, *lo, *hi, values.size());
+    EXPECT_GE(*lo, -0.15 - 1e-12) << corner.file;
+    EXPECT_LT(*lo, -0.14) << corner.file << ": saturates outside";
+    EXPECT_LE(*hi, 0.3 + 1e-12) << corner.file;
+  }
+}
+
+// Every cell of the 5 x 5 spreadsheet (x4, x5 in 0, 0.25, .., 1) is a substantial solid: at least
+// half the volume of the smallest key shape (NiHon). Before the key shapes were normalised, the
+// NiHon-Rob_let edge (x5 = 1, x4 = 0.25..0.75) kept a fifth of it (a few slivers).
+TEST(HomotopicModels, Meta5DEveryCellIsASubstantialSolid)
+{
+  const auto meta5d = load("meta5d.hf", "meta5d");
+  ASSERT_TRUE(meta5d);
+  double smallest = 1e300;
+  for (const Corner& corner : kCorners)
+  {
+    const auto model = load(corner.file);
+    ASSERT_TRUE(model);
+    smallest = std::min(smallest,
+      frep::mesh::analyse_topology(extract(model->tape(), 64)).signed_volume);
+  }
+  for (double x5 : { 0.0, 0.25, 0.5, 0.75, 1.0 })
+  {
+    for (double x4 : { 0.0, 0.25, 0.5, 0.75, 1.0 })
+    {
+      frep::Specialisation slice;
+      slice.fixed = { std::nullopt, std::nullopt, std::nullopt, x4, x5 };
+      const frep::mesh::MeshTopology topology =
+        frep::mesh::analyse_topology(extract(meta5d->specialise(slice), 64));
+      std::printf("meta5d at x4 = %.2f, x5 = %.2f: volume %.1f (%.2f of the smallest key shape)\n",
+        x4, x5, topology.signed_volume, topology.signed_volume / smallest);
+      EXPECT_TRUE(topology.watertight_and_oriented()) << x4 << " " << x5;
+      EXPECT_GT(topology.signed_volume, 0.5 * smallest) << x4 << " " << x5;
+    }
+  }
+}

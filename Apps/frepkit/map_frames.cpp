@@ -172,7 +172,7 @@ void render_frames(const MapOptions& options,
         return;
       }
       const mapping::Sample frame = on_floor ? mapping::on_floor(scene, plan.frames[k]) : plan.frames[k];
-      MapWorkers::Picture p = workers.picture(
+      MapWorkers::Picture p = workers.picture(render.frames_method,
         frame, camera, render.width, render.height, worker, 1, on_floor ? &scene.floor : nullptr);
       mapping::decorate_frame(p.image, plan, frame, render, workers.kit(worker));
       const auto w0 = Clock::now();

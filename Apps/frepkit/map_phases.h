@@ -142,7 +142,8 @@ public:
     double render_seconds = 0.0; ///< rasterising or ray casting
     std::size_t triangles = 0;
   };
-  Picture picture(const mapping::Sample& sample,
+  Picture picture(mapping::RenderSettings::Method method,
+    const mapping::Sample& sample,
     const frep::render::Camera& camera,
     int width,
     int height,

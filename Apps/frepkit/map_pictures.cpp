@@ -51,7 +51,7 @@ void render_spreadsheet(const MapInputs& in,
   workers.parallel(plan.cells.size(),
     [&](std::size_t i, int worker)
     {
-      MapWorkers::Picture p = workers.picture(plan.cells[i], camera, cell_px, cell_px, worker);
+      MapWorkers::Picture p = workers.picture(spec.render.method, plan.cells[i], camera, cell_px, cell_px, worker);
       pictures[i] = std::move(p.image);
       cell_ledger.add(p.mesh_seconds, p.render_seconds, 0.0);
       workers.advance();
@@ -78,7 +78,7 @@ void render_shape(const MapInputs& in,
   const frep::render::Camera camera =
     mapping::plan_camera(plan, render, static_cast<double>(render.width) / render.height);
   const MapWorkers::Picture p =
-    workers.picture(plan.still, camera, render.width, render.height, 0, workers.count());
+    workers.picture(render.method, plan.still, camera, render.width, render.height, 0, workers.count());
   write_png_file(out_dir / "shape.png", p.image);
   const bool raycast = render.method == mapping::RenderSettings::Method::Raycast;
   nlohmann::json entry{ { "file", "shape.png" },

@@ -122,7 +122,8 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
   return section;
 }
 
-MapWorkers::Picture MapWorkers::picture(const mapping::Sample& sample,
+MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
+  const mapping::Sample& sample,
   const frep::render::Camera& camera,
   int width,
   int height,
@@ -133,7 +134,7 @@ MapWorkers::Picture MapWorkers::picture(const mapping::Sample& sample,
   Picture p;
   const mapping::RenderSettings& settings = inputs_.spec.render;
   const auto t0 = std::chrono::steady_clock::now();
-  if (settings.method == mapping::RenderSettings::Method::Raycast)
+  if (method == mapping::RenderSettings::Method::Raycast)
   {
     mapping::RaycastOptions ro;
     ro.threads = threads;
@@ -157,7 +158,7 @@ MapWorkers::Picture MapWorkers::picture(const mapping::Sample& sample,
   const mapping::Section s = section(sample, worker);
   const auto t1 = std::chrono::steady_clock::now();
   p.image =
-    mapping::render_sample(inputs_.plan, s, sample, camera, width, height, settings, threads);
+    mapping::render_sample(inputs_.plan, s, sample, camera, width, height, settings, threads, floor);
   p.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
   p.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   p.triangles = s.surface.cell_count();

@@ -1127,6 +1127,40 @@ void read_view_box(Reader& r, const Json& render, RenderSettings& rs)
   }
 }
 
+// "render.method": "mesh" | "raycast" for cells and frames, or {"cells": ..., "frames": ...}.
+void read_render_method(Reader& r, const Json& render, RenderSettings& rs)
+{
+  const auto m = render.find("method");
+  if (m == render.end())
+  {
+    return;
+  }
+  if (m->is_object())
+  {
+    if (!r.object(*m, "render.method", { "cells", "frames" }))
+    {
+      return;
+    }
+    for (const auto& [key, target] :
+      { std::pair<const char*, RenderSettings::Method*>{ "cells", &rs.method },
+        std::pair<const char*, RenderSettings::Method*>{ "frames", &rs.frames_method } })
+    {
+      if (const auto v = m->find(key); v != m->end())
+      {
+        if (const auto method = r.choice(*v, std::string("render.method.") + key, "method", render_methods))
+        {
+          *target = *method;
+        }
+      }
+    }
+    return;
+  }
+  if (const auto method = r.choice(*m, "render.method", "method", render_methods))
+  {
+    rs.method = rs.frames_method = *method;
+  }
+}
+
 // "render": picture size, colours, camera angles, inset, view box, colour source.
 void read_render(Reader& r, const Json& doc, RenderSettings& rs)
 {
@@ -1169,11 +1203,7 @@ void read_render(Reader& r, const Json& doc, RenderSettings& rs)
     rs.colour_source,
     [&](const Json& v, const std::string& p)
     { return r.choice(v, p, "colour source", colour_sources); });
-  optional_key(*g,
-    "method",
-    "render",
-    rs.method,
-    [&](const Json& v, const std::string& p) { return r.choice(v, p, "method", render_methods); });
+  read_render_method(r, *g, rs);
   optional_key(*g,
     "scene",
     "render",
@@ -1415,7 +1445,11 @@ std::string save_mapping(const Spec& spec)
     { "elevation", rs.elevation },
     { "inset", rs.inset },
     { "colour_source", name_of(colour_sources, rs.colour_source) },
-    { "method", name_of(render_methods, rs.method) },
+    { "method",
+      rs.method == rs.frames_method
+        ? Json(name_of(render_methods, rs.method))
+        : Json{ { "cells", name_of(render_methods, rs.method) },
+            { "frames", name_of(render_methods, rs.frames_method) } } },
     { "scene", name_of(render_scenes, rs.scene) } };
   if (rs.view_box)
   {

@@ -551,16 +551,14 @@ private:
   {
     const RenderSettings& rs = spec_.render;
     std::string why;
-    if (rs.method == RenderSettings::Method::Raycast && !world_is_affine(plan(), &why))
+    if ((rs.method == RenderSettings::Method::Raycast ||
+          rs.frames_method == RenderSettings::Method::Raycast) &&
+        !world_is_affine(plan(), &why))
     {
       error("render.method", "\"raycast\" " + why + "; use \"mesh\"");
     }
     if (rs.scene == RenderSettings::Scene::Floor)
     {
-      if (rs.method != RenderSettings::Method::Raycast)
-      {
-        error("render.scene", "the \"floor\" scene is ray-cast: set render.method to \"raycast\"");
-      }
       if (plan().dynamic_coordinates.size() != 2)
       {
         error("render.scene",

@@ -201,7 +201,8 @@ struct RenderSettings
     Attributes,
   };
   ColourSource colour_source = ColourSource::Uniform;
-  /// How cells and frames are drawn (JSON "method"): Mesh = each section meshed on the world
+  /// How cells and frames are drawn (JSON "method": one name for both, or {"cells": ...,
+  /// "frames": ...}): Mesh = each section meshed on the world
   /// grid and rasterised; Raycast = drawn by rays from the function itself (no mesh: no facets,
   /// no detail lost below the grid; needs the cartesian system and linear world curves).
   enum class Method
@@ -209,11 +210,12 @@ struct RenderSettings
     Mesh,
     Raycast,
   };
-  Method method = Method::Mesh;
+  Method method = Method::Mesh;        ///< cells (the spreadsheet) and the shape alone
+  Method frames_method = Method::Mesh; ///< animation frames (JSON "method": {"frames": ...})
   /// What a frame shows around the section (JSON "scene"): Page = the section in the middle of
   /// the background (with the inset if `inset`); Floor = the paper's Fig. 8: the plane of the
   /// two dynamic coordinates as a checkerboard floor (the spreadsheet's squares), the path drawn
-  /// on it, the section standing on it at its point with its shadow (ray-cast frames only).
+  /// on it, the section standing on it at its point with its shadow (either method).
   enum class Scene
   {
     Page,

@@ -346,7 +346,7 @@ Result render(render::Image& target,
   {
     // Half a picture's side over the shape's bounding sphere (the look-up is bilinear): the map
     // is a picture of its own, traced like the camera's, and costs as much per sample.
-    const int size = std::clamp(std::max(target.width, target.height) / 2, 256, 768);
+    const int size = std::clamp(std::max(target.width, target.height) / 4, 192, 512);
     const auto t0 = std::chrono::steady_clock::now();
     c.shadow.emplace(shape, clip, c.map, c.kit.lights[0].l, size, pool, result.statistics);
     result.statistics.shadow_seconds =

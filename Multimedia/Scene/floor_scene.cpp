@@ -1,5 +1,7 @@
 #include "Scene/floor_scene.h"
 
+#include "Scene/pictures.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,12 +68,12 @@ FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
     lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
     hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
   }
-  // One square of the board is a little smaller than the shape's box, so that neighbouring
-  // cells' shapes would touch: the board reads as the spreadsheet laid flat.
+  // One square of the board is about half the shape's box: the shape stands out over the
+  // board yet the board is large enough to read as the spreadsheet laid flat.
   const double shape_size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   const std::array<double, 3> u = squares_along(spec, plan.dynamic_coordinates[0], plan.path_plane[0]);
   const std::array<double, 3> v = squares_along(spec, plan.dynamic_coordinates[1], plan.path_plane[1]);
-  const double world_square = 0.9 * shape_size;
+  const double world_square = 0.55 * shape_size;
   // u runs along +x; v along -y, so that from the default camera (looking along +y) v grows
   // towards the viewer, as the spreadsheet's rows grow down the page.
   const double sx = world_square / u[1], sy = -world_square / v[1];
@@ -100,8 +102,8 @@ FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
   const std::array<double, 3> board_hi{
     f.origin[0] + columns * world_square, f.origin[1] + rows * world_square, f.height + height
   };
-  scene.camera = render::fit_box(
-    board_lo, board_hi, aspect, settings.azimuth, std::max(settings.elevation, 30.0), { 30.0, false, 0.95 });
+  scene.camera =
+    box_camera(board_lo, board_hi, aspect, settings.azimuth, std::max(settings.elevation, 30.0));
   scene.ok = true;
   return scene;
 }

@@ -1,5 +1,7 @@
 #include "Scene/pictures.h"
 
+#include "Scene/floor_mesh.h"
+
 #include "Render/mesh_renderer.h"
 #include "Render/plot2d.h"
 
@@ -84,10 +86,19 @@ render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, dou
     lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
     hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
   }
+  return box_camera(lo, hi, aspect, settings.azimuth, settings.elevation);
+}
+
+render::Camera box_camera(const std::array<double, 3>& lo,
+  const std::array<double, 3>& hi,
+  double aspect,
+  double azimuth,
+  double elevation)
+{
   // fit_box frames the box's bounding sphere; move the eye in until the box's eight corners
   // (not the sphere, which is up to sqrt(3) wider) fill the picture.
   const double fill = 0.92;
-  render::Camera camera = render::fit_box(lo, hi, aspect, settings.azimuth, settings.elevation);
+  render::Camera camera = render::fit_box(lo, hi, aspect, azimuth, elevation);
   if (camera.orthographic)
   {
     return camera;
@@ -128,12 +139,13 @@ render::Image render_sample(const Plan& plan,
   int width,
   int height,
   const RenderSettings& settings,
-  int threads)
+  int threads,
+  const raycast::Floor* floor)
 {
   (void)settings;
   render::Image image(width, height, to_rgba(sample.background));
   const mesh::Surface& s = section.surface;
-  if (s.cells.empty())
+  if (s.cells.empty() && !floor)
   {
     return image;
   }
@@ -168,7 +180,27 @@ render::Image render_sample(const Plan& plan,
   const render::Rgba c = to_rgba(sample.colour);
   mesh.colour = { c.r, c.g, c.b };
   mesh.opacity = sample.opacity;
-  render::render_mesh(image, camera, mesh, style);
+  if (!floor)
+  {
+    render::render_mesh(image, camera, mesh, style);
+    return image;
+  }
+  // The floor scene: board and path, the shape, its shadow over the board (a transparent
+  // layer of its own: overlapping shadow triangles do not darken twice).
+  render::Renderer renderer(width, height, camera, style);
+  const OwnedMesh board = floor_board(*floor);
+  renderer.add(board.input({ 1.0F, 1.0F, 1.0F }));
+  if (!s.cells.empty())
+  {
+    renderer.add(mesh);
+    const OwnedMesh shadow = floor_shadow(*floor, s, camera, style);
+    if (!shadow.triangles.empty())
+    {
+      render::MeshInput dark = shadow.input({ 0.0F, 0.0F, 0.0F }, 0.45);
+      renderer.add(dark);
+    }
+  }
+  renderer.resolve(image);
   return image;
 }
 

@@ -8,6 +8,8 @@
 #include "Plan/mapping_plan.h"
 #include "Scene/section_mesh.h"
 
+#include "Raycast/raycast.h"
+
 #include "Render/camera.h"
 #include "Render/image.h"
 #include "Render/text.h"
@@ -33,9 +35,18 @@ struct PictureKit
 /// settings' azimuth and elevation, fitted for the aspect ratio width / height.
 render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, double aspect);
 
+/// A camera that sees the box [lo, hi] from (azimuth, elevation) (render::fit_box's angles) with
+/// its eight corners filling the picture of width / height = aspect.
+render::Camera box_camera(const std::array<double, 3>& lo,
+  const std::array<double, 3>& hi,
+  double aspect,
+  double azimuth,
+  double elevation);
+
 /// The section drawn with the sample's colour (or the section's vertex colours), opacity and
 /// light intensity over the sample's background. A 2-D section (segments) is drawn as seen
-/// from +z, fitted to the world box. `threads` 0 = all cores.
+/// from +z, fitted to the world box. `threads` 0 = all cores. With `floor` (the floor scene,
+/// floor_scene.h), the checkerboard, the path and the section's shadow are drawn with it.
 render::Image render_sample(const Plan& plan,
   const Section& section,
   const Sample& sample,
@@ -43,7 +54,8 @@ render::Image render_sample(const Plan& plan,
   int width,
   int height,
   const RenderSettings& settings,
-  int threads = 1);
+  int threads = 1,
+  const raycast::Floor* floor = nullptr);
 
 /// The cells (pictures in plan order: column fastest, then row, then layer) on the plan's grid
 /// with gaps, each labelled with its coordinate values, the grid coordinates named along the

@@ -4,7 +4,8 @@
 # formats and coordinate counts refused with the option named), and frepkit map with
 # "render": {"method": "raycast"} (cells drawn without meshing, like the meshed ones) and
 # {"scene": "floor"} (the paper's Fig. 8: the shape travelling over the checkerboard of the
-# dynamic plane, against a baseline frame), and bad render settings refused with the JSON place.
+# dynamic plane, ray-cast against a baseline frame, meshed like the ray-cast one), and bad
+# render settings refused with the JSON place.
 #   frepkit_render_test.sh FREPKIT IMAGE_CHECK SOURCE_DIR
 set -u
 frepkit=$(realpath "$1")
@@ -138,7 +139,18 @@ PY
 run "ray casting a bent world refused" 1 "$frepkit" map ball5.hf cyl.json -O bad2
 expect_in "bent world: render.method named" "$err" "render.method"
 mapping mesh floor cartesian >floor_mesh.json
-run "floor scene needs rays" 1 "$frepkit" map ball5.hf floor_mesh.json -O bad3
+run "map, the floor scene meshed" 0 "$frepkit" map ball5.hf floor_mesh.json -O flm --only frames
+line=$("$image" compare flm/frames/frame_00001.png fl/frames/frame_00001.png)
+if below "$(field differing_fraction "$line")" 0.03; then pass "meshed and ray-cast floor frames agree ($line)"; else fail "meshed vs ray-cast floor frame: $line"; fi
+"$py" - floor_mesh.json <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+del j["coordinates"]["x5"][1]  # x5 no longer dynamic: one dynamic coordinate
+j["coordinates"]["x5"].append({"type": "fixed", "value": 0.5})
+j["animation"].pop("path")
+json.dump(j, open("floor_1d.json", "w"))
+PY
+run "floor scene needs two dynamic coordinates" 1 "$frepkit" map ball5.hf floor_1d.json -O bad3
 expect_in "floor scene: render.scene named" "$err" "render.scene"
 for d in bad1 bad2 bad3; do
   if [ -e "$d" ] && [ -n "$(ls -A "$d")" ]; then fail "$d: a refused mapping wrote files"; else pass "$d: nothing written"; fi

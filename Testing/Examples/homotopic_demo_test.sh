@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job end to end at the demo's own settings (spreadsheet cells and frames at 128^3),
+# The main job end to end at the demo's own settings (ray-cast cells, meshed floor-scene frames at 128^3),
 # with 48 frames instead of 240 to keep the suite short: every output exists; the spreadsheet
 # has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
 # count and an audio stream of the same duration; the key shapes' STL files are closed
@@ -42,7 +42,7 @@ fi
 line=$("$image" compare demo/frames/frame_00020.png "$frame_baseline")
 echo "frame 20 against its baseline: $line"
 if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference "$line")" 'BEGIN { exit !(d < 0.002 && m < 0.003) }'; then
-  pass "frame 20 (shape, caption, inset) matches its baseline"
+  pass "frame 20 (the shape on the floor, the path, the caption) matches its baseline"
 else
   fail "frame 20 differs from its baseline ($line)"
   cp demo/frames/frame_00020.png "${TMPDIR:-/tmp}/homotopic_frame_20.failed.png" 2>/dev/null

@@ -196,6 +196,28 @@ sampler.OutputScalarType = "Float"
 sampler.UpdatePipeline()
 t.check(sampler.PointData["F"].GetDataType() == 10, "float output")
 
+# --- FRep Ray Caster: the ball of radius 2 (x4 = 0) in its box [-2.4, 2.4]^3 ----------------
+caster = FRepRayCaster(Input=fslice)
+t.check(caster.Width == 640 and caster.Height == 480 and caster.Azimuth == 35.0 and
+        caster.Elevation == 25.0 and caster.Supersample == 2 and caster.Floor == 0 and
+        list(caster.Colour) == [0.85, 0.62, 0.38] and list(caster.Background) == [1, 1, 1, 1],
+        "ray caster defaults")
+caster.Width = 81  # odd: the centre pixel looks along the view axis
+caster.Height = 61
+caster.UpdatePipeline()
+info = caster.GetDataInformation()
+t.check(list(info.GetExtent()) == [0, 80, 0, 60, 0, 0], "picture extent %s" % list(info.GetExtent()))
+colour = caster.PointData["Colour"]
+t.check(colour is not None and colour.GetNumberOfComponents() == 4 and colour.GetDataType() == 3,
+        "Colour: unsigned char RGBA")
+# fit_box's distance to the box centre: r sqrt(1 + 1 / (0.9 tan 15 deg)^2), r = 2.4 sqrt(3).
+distance = 2.4 * math.sqrt(3) * math.sqrt(1 + 1 / (0.9 * math.tan(math.radians(15))) ** 2)
+t.near(caster.PointData["Depth"].GetRange()[0], distance - 2.0, 1e-4 * distance,
+       "nearest depth: the front of the ball")
+caster.Floor = 1
+caster.UpdatePipeline()
+t.check(caster.GetDataInformation().GetNumberOfPoints() == 81 * 61, "with the floor")
+
 # --- HyperFun Source: defaults and properties ------------------------------------------------
 src = HyperFunSource()
 src.UpdatePipeline()

@@ -141,18 +141,7 @@ int vtkFRepRayCaster::RequestInformation(vtkInformation*,
     frep::render::Vec3 hi{ in.Box[1], in.Box[3], in.Box[5] };
     if (this->Floor)
     {
-      // Under the box, a little wider than it: 8 x 8 squares (as frepkit render --floor).
-      const double span = 1.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
-      frep::raycast::Floor floor;
-      floor.height = lo[2];
-      floor.square = span / 8.0;
-      floor.columns = floor.rows = 8;
-      floor.origin = { 0.5 * (lo[0] + hi[0]) - 0.5 * span, 0.5 * (lo[1] + hi[1]) - 0.5 * span };
-      lo[0] = floor.origin[0];
-      lo[1] = floor.origin[1];
-      hi[0] = floor.origin[0] + span;
-      hi[1] = floor.origin[1] + span;
-      in.Floor = floor;
+      in.Floor = frep::raycast::floor_under(lo, hi);
     }
     frep::render::FitOptions fit;
     fit.view_angle_deg = this->ViewAngle;

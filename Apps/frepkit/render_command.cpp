@@ -145,16 +145,7 @@ int run_render(const RenderOptions& options)
   frep::raycast::Floor floor;
   if (options.floor)
   {
-    // Under the box, a little wider than it: 8 x 8 squares.
-    const double span = 1.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
-    floor.height = lo[2];
-    floor.square = span / 8.0;
-    floor.columns = floor.rows = 8;
-    floor.origin = { 0.5 * (lo[0] + hi[0]) - 0.5 * span, 0.5 * (lo[1] + hi[1]) - 0.5 * span };
-    lo[0] = floor.origin[0];
-    lo[1] = floor.origin[1];
-    hi[0] = floor.origin[0] + span;
-    hi[1] = floor.origin[1] + span;
+    floor = frep::raycast::floor_under(lo, hi);
   }
   const frep::render::Camera camera = frep::render::fit_box(lo,
     hi,

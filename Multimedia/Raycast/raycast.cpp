@@ -300,6 +300,21 @@ std::vector<std::uint32_t> edge_pixels(const render::Image& image,
 
 } // namespace
 
+Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi)
+{
+  const double span = 1.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  Floor floor;
+  floor.height = lo[2];
+  floor.square = span / 8.0;
+  floor.columns = floor.rows = 8;
+  floor.origin = { 0.5 * (lo[0] + hi[0]) - 0.5 * span, 0.5 * (lo[1] + hi[1]) - 0.5 * span };
+  lo[0] = floor.origin[0];
+  lo[1] = floor.origin[1];
+  hi[0] = floor.origin[0] + span;
+  hi[1] = floor.origin[1] + span;
+  return floor;
+}
+
 Result render(render::Image& target,
   const render::Camera& camera,
   const Shape& shape,

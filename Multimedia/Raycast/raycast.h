@@ -79,6 +79,11 @@ struct Floor
   bool shadows = true; ///< the shape's shadow from the key light (the first light)
 };
 
+/// A floor under the box [lo, hi] (world), a little wider than it: 8 x 8 squares centred
+/// under the box at its bottom. `lo` and `hi` are widened in x and y to the floor, so a camera
+/// fitted to them sees all of it.
+Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi);
+
 struct Style
 {
   /// The mesh renderer's lights, ambient, specular, shininess, supersample (per axis, 1..4)

@@ -77,6 +77,12 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
     ->check(CLI::Range(1, 100000));
   cmd->add_option("--resolution", o.resolution, "grid samples per cell and frame (default 128)")
     ->check(CLI::Range(8, 1024));
+  cmd
+    ->add_option("--method",
+      o.method,
+      "draw cells and frames by 'mesh' (quick drafts) or 'raycast' (default: the mapping's: "
+      "ray-cast spreadsheet, meshed frames)")
+    ->check(CLI::IsMember({ "mesh", "raycast" }));
   cmd->add_option("--mesh-grid", o.mesh_grid, "grid of the key shapes' STL meshes (default 256)")
     ->check(CLI::Range(8, 2048));
   cmd->add_flag("--force", o.force, "render every frame again");
@@ -100,6 +106,7 @@ int run_demo(const DemoOptions& options)
   map.name = "homotopic";
   map.frames = options.frames;
   map.resolution = options.resolution;
+  map.method = options.method;
   map.force = options.force;
   map.threads = options.threads;
   map.quiet = options.quiet;

@@ -22,6 +22,7 @@ struct DemoOptions
   std::string examples; ///< the Examples folder; default: the source tree's, else next to the tool
   std::optional<int> frames;
   std::optional<int> resolution;
+  std::optional<std::string> method; ///< overrides the mapping's render.method (mesh | raycast)
   int mesh_grid = 256; ///< grid of the key shapes' meshes
   bool force = false;
   int threads = 0;

@@ -33,6 +33,11 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
   cmd->add_option("--frames", o.frames, "number of frames (default: duration x fps)")
     ->check(CLI::Range(1, 1000000));
   cmd
+    ->add_option("--method",
+      o.method,
+      "draw cells and frames by 'mesh' or 'raycast' (default: the mapping's render.method)")
+    ->check(CLI::IsMember({ "mesh", "raycast" }));
+  cmd
     ->add_option("--only",
       o.only,
       "produce only these: spreadsheet, path, frames, audio, movie, shape (default: all the "

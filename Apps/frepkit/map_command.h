@@ -30,6 +30,8 @@ struct MapOptions
   std::vector<double> parameters;
   std::optional<int> resolution; ///< overrides world.resolution
   std::optional<int> frames;     ///< overrides the frame count (duration * fps)
+  /// Overrides render.method for cells and frames alike: "mesh" (quick drafts) or "raycast".
+  std::optional<std::string> method;
   std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape
   std::string name;              ///< output stem; default: the mapping file's stem
   bool force = false;            ///< re-render frames that exist

@@ -43,7 +43,8 @@ std::string fingerprint(const std::string& model_text,
 {
   std::ostringstream key;
   key << model_text << '\0' << mapping_text << '\0' << options.object.value_or("") << '\0'
-      << options.resolution.value_or(0) << '\0' << options.frames.value_or(0) << '\0';
+      << options.resolution.value_or(0) << '\0' << options.frames.value_or(0) << '\0'
+      << options.method.value_or("") << '\0';
   for (double a : options.parameters)
   {
     key << a << ',';

@@ -27,7 +27,7 @@ void print_errors(const MapOptions& options, const Errors& errors)
   }
 }
 
-// The mapping file, checked, with --resolution and --frames applied.
+// The mapping file, checked, with --resolution, --frames and --method applied.
 mapping::Spec load_spec(const MapOptions& options, const std::string& mapping_text)
 {
   mapping::LoadResult loaded = mapping::load_mapping(mapping_text);
@@ -44,6 +44,13 @@ mapping::Spec load_spec(const MapOptions& options, const std::string& mapping_te
   if (options.frames)
   {
     spec.animation.duration = *options.frames / spec.animation.fps;
+  }
+  if (options.method)
+  {
+    using Method = mapping::RenderSettings::Method;
+    const Method method = *options.method == "raycast" ? Method::Raycast : Method::Mesh;
+    spec.render.method = method;
+    spec.render.frames_method = method;
   }
   return spec;
 }

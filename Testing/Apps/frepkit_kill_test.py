@@ -135,9 +135,11 @@ def make_cases(frepkit, source, shared, work):
              fk + ["map", ball, mapping, "-O", ".", "-q", "--force"], settle=1),
         Case("demo",
              fk + ["demo", "homotopic", "-O", ".", "-q", "--force", "--frames", "3",
-                   "--resolution", "8", "--mesh-grid", "40", "--examples", examples],
+                   "--resolution", "8", "--mesh-grid", "40", "--method", "mesh",
+                   "--examples", examples],
              fk + ["demo", "homotopic", "-O", ".", "-q", "--force", "--frames", "3",
-                   "--resolution", "8", "--mesh-grid", "40", "--examples", examples],
+                   "--resolution", "8", "--mesh-grid", "40", "--method", "mesh",
+                   "--examples", examples],
              settle=1),
     ]
 

@@ -243,9 +243,13 @@ Seen shade_sample(const Context& c,
 }
 
 // Pixels whose first ray differs from a neighbour's in what it sees, in depth (more than a
-// few pixel widths: a silhouette over the shape itself) or in colour: only these get
-// supersample x supersample rays. Interiors of smooth regions keep their one ray, which is
-// what makes anti-aliasing affordable (4-9 times fewer rays).
+// few pixel widths: a silhouette over the shape itself) or in colour (by more than kColourEdge:
+// a crease or the rim of a highlight; smooth shading changes by less between two pixels): only
+// these get supersample x supersample rays. Interiors of smooth regions keep their one ray,
+// which is what makes anti-aliasing affordable (4-9 times fewer rays). The threshold was 0.12
+// until 2026-12-02: on a 300 x 300 cell of Meta5D it marked 3051 pixels against 1876 at 0.3 (and
+// 1444 with no colour test at all), for a picture that looks the same (edges 2.84 s -> 1.97 s).
+constexpr float kColourEdge = 0.3F; // summed over linear R, G, B
 std::vector<std::uint32_t> edge_pixels(const render::Image& image,
   const std::vector<Seen>& seen,
   const std::vector<float>& depth,
@@ -270,7 +274,7 @@ std::vector<std::uint32_t> edge_pixels(const render::Image& image,
     }
     const float* p = image.rgba.data() + 4 * a;
     const float* q = image.rgba.data() + 4 * b;
-    return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) > 0.12F;
+    return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) > kColourEdge;
   };
   for (int y = 0; y < h; ++y)
   {

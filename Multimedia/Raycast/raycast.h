@@ -10,10 +10,13 @@
 //     for all its rays at once; a piece where F >= 0 for sure is solid (its rays hit at their
 //     entry). Ambiguous pieces split — in depth while they are deeper than wide, else in four on
 //     the screen — front to back, so a ray stops at its first hit.
-//  2. A single ray's ambiguous stretch, once no longer than a few footprints (the width of a
-//     sample at that depth), is sampled at steps of a quarter footprint: a part thinner than
-//     that is below the picture's resolution. The first sign change is refined by bisection to
-//     a millionth of the footprint.
+//  2. A piece whose open rays need few march steps in all (TraceOptions::march_budget: an
+//     interval evaluation costs about 20 point evaluations) is marched without intervals; a
+//     single ray's ambiguous stretch, once no deeper than a few footprints (the width of a
+//     sample at that depth), is marched too. March steps are half a footprint, all the piece's
+//     steps in one batch of the SIMD evaluator: a part thinner than that is below the picture's
+//     resolution. The first sign change is refined by regula falsi (Illinois) to a thousandth
+//     of the footprint.
 // Every value comes from the engine's exact evaluators; intervals only decide where to look,
 // never what F is, so a pruned search finds the same roots as a brute-force march at the same
 // step would.
@@ -45,6 +48,11 @@ namespace frep::raycast
 using ColourFunction =
   std::function<std::array<float, 3>(const std::array<double, 3>& model_point,
     std::span<const double> outputs)>;
+
+/// The colour rule of the mesh path for a tape with outputs F, s[1..]: s[1..3] read as floats
+/// (as the mesher stores attributes), made RGB by attribute_rgb (Compiler/attribute_rgb.h, the
+/// one rule of every output that colours by s[]) and returned linear; a missing s[k] is 0.
+ColourFunction attribute_colours();
 
 /// The solid to draw: F >= 0 inside, cut by its model box (the cut faces are drawn as caps, as
 /// the mesher closes its surfaces), placed in the world by an affine map.

@@ -35,8 +35,9 @@ echo "against the baseline: $line"
 if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference "$line")" 'BEGIN { exit !(d < 0.002 && m < 0.003) }'; then
   pass "spreadsheet matches its baseline"
 else
-  fail "spreadsheet differs from its baseline ($line); the picture is kept as $work/demo/spreadsheet.png"
-  cp demo/spreadsheet.png "${TMPDIR:-/tmp}/homotopic_spreadsheet.failed.png" 2>/dev/null
+  kept="${TMPDIR:-/tmp}/homotopic_spreadsheet.failed.png"
+  cp demo/spreadsheet.png "$kept" 2>/dev/null
+  fail "spreadsheet differs from its baseline ($line); the picture is kept as $kept"
 fi
 
 line=$("$image" compare demo/frames/frame_00020.png "$frame_baseline")
@@ -44,8 +45,9 @@ echo "frame 20 against its baseline: $line"
 if awk -v d="$(field differing_fraction "$line")" -v m="$(field mean_difference "$line")" 'BEGIN { exit !(d < 0.002 && m < 0.003) }'; then
   pass "frame 20 (the shape on the floor, the path, the caption) matches its baseline"
 else
-  fail "frame 20 differs from its baseline ($line)"
-  cp demo/frames/frame_00020.png "${TMPDIR:-/tmp}/homotopic_frame_20.failed.png" 2>/dev/null
+  kept="${TMPDIR:-/tmp}/homotopic_frame_20.failed.png"
+  cp demo/frames/frame_00020.png "$kept" 2>/dev/null
+  fail "frame 20 differs from its baseline ($line); the picture is kept as $kept"
 fi
 
 line=$("$media" movie demo/homotopic.mp4)

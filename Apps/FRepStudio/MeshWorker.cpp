@@ -1,5 +1,7 @@
 #include "MeshWorker.h"
 
+#include "SectionTape.h"
+
 #include "Eval/thread_pool.h"
 #include "Mesh/surface.h"
 
@@ -67,18 +69,10 @@ void MeshWorker::run(std::uint64_t generation, const SectionRequest& request,
     return;
   }
   const auto start = std::chrono::steady_clock::now();
-  frep::Specialisation specialisation;
-  specialisation.parameters = request.parameters;
-  specialisation.fixed.assign(static_cast<std::size_t>(x_dim), std::nullopt);
-  for (int i = 3; i < x_dim; ++i)
-  {
-    const std::size_t k = static_cast<std::size_t>(i - 3);
-    specialisation.fixed[i] = k < request.fixed_values.size() ? request.fixed_values[k] : 0.0;
-  }
   std::shared_ptr<const frep::Tape> tape;
   try
   {
-    tape = request.model->specialise(specialisation);
+    tape = section_tape(*request.model, request.parameters, request.fixed_values);
   }
   catch (const std::exception& error)
   {

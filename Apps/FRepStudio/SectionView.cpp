@@ -1,13 +1,20 @@
 #include "SectionView.h"
 
 #include <QImage>
+#include <QResizeEvent>
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCubeAxesActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageData.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkOutlineSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -77,12 +84,33 @@ SectionView::SectionView(QWidget* parent)
   // frameSwapped is when a frame is really on screen (QVTKOpenGLNativeWidget renders in
   // paintGL, later than our Render() calls): what the interactive timings must measure.
   connect(widget_, &QOpenGLWidget::frameSwapped, this, &SectionView::frameRendered);
+
+  // VTK's default trackball camera, set explicitly so that its start/end of interaction (mouse
+  // drags and wheel steps alike) can be observed: the "High quality" picture follows them.
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  window_->GetInteractor()->SetInteractorStyle(style);
+  vtkNew<vtkCallbackCommand> started;
+  started->SetClientData(this);
+  started->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+    emit static_cast<SectionView*>(view)->interactionStarted();
+  });
+  style->AddObserver(vtkCommand::StartInteractionEvent, started);
+  vtkNew<vtkCallbackCommand> ended;
+  ended->SetClientData(this);
+  ended->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+    emit static_cast<SectionView*>(view)->interactionEnded();
+  });
+  style->AddObserver(vtkCommand::EndInteractionEvent, ended);
+  picture_texture_->InterpolateOff();
 }
 
 SectionView::~SectionView() = default;
 void SectionView::setSection(vtkPolyData* poly_data, const std::array<double, 3>& lo,
   const std::array<double, 3>& hi, bool reset_camera)
 {
+  showing_picture_ = false;
+  renderer_->TexturedBackgroundOff();
+  outline_actor_->VisibilityOn();
   shown_ = poly_data;
   mapper_->SetInputData(poly_data);
   vtkDataArray* scalars = poly_data ? poly_data->GetPointData()->GetScalars() : nullptr;
@@ -131,6 +159,9 @@ void SectionView::resetCamera(const double bounds[6])
 
 void SectionView::clearSection()
 {
+  showing_picture_ = false;
+  renderer_->TexturedBackgroundOff();
+  outline_actor_->VisibilityOn();
   shown_ = nullptr;
   mapper_->SetInputData(nullptr);
   actor_->VisibilityOff();
@@ -154,6 +185,78 @@ QImage SectionView::renderToImage()
 vtkGenericOpenGLRenderWindow* SectionView::renderWindow() const
 {
   return window_;
+}
+
+frep::render::Camera SectionView::camera() const
+{
+  vtkCamera* vtk_camera = renderer_->GetActiveCamera();
+  frep::render::Camera camera;
+  vtk_camera->GetPosition(camera.position.data());
+  vtk_camera->GetFocalPoint(camera.focal_point.data());
+  vtk_camera->GetViewUp(camera.view_up.data());
+  camera.view_angle_deg = vtk_camera->GetViewAngle();
+  camera.orthographic = vtk_camera->GetParallelProjection() != 0;
+  camera.parallel_scale = vtk_camera->GetParallelScale();
+  return camera;
+}
+
+QSize SectionView::pixelSize() const
+{
+  const int* size = window_->GetSize();
+  return size[0] > 0 && size[1] > 0 ? QSize(size[0], size[1])
+                                    : widget_->size() * widget_->devicePixelRatioF();
+}
+
+std::array<float, 3> SectionView::backgroundBottom() const
+{
+  const double* c = renderer_->GetBackground();
+  return { static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]) };
+}
+
+std::array<float, 3> SectionView::backgroundTop() const
+{
+  const double* c = renderer_->GetBackground2();
+  return { static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]) };
+}
+
+void SectionView::showPicture(const QImage& picture)
+{
+  if (picture.isNull())
+    return;
+  // QImage's first row is the top; vtkImageData's first row is the bottom.
+  const QImage rgb = picture.convertToFormat(QImage::Format_RGB888);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(rgb.width(), rgb.height(), 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  const std::size_t row_bytes = static_cast<std::size_t>(rgb.width()) * 3;
+  for (int y = 0; y < rgb.height(); ++y)
+    std::memcpy(pixels + static_cast<std::size_t>(rgb.height() - 1 - y) * row_bytes,
+      rgb.constScanLine(y), row_bytes);
+  picture_texture_->SetInputData(image);
+  renderer_->SetBackgroundTexture(picture_texture_);
+  renderer_->TexturedBackgroundOn();
+  actor_->VisibilityOff();
+  outline_actor_->VisibilityOff(); // drawn over the picture it would cross the shape
+  showing_picture_ = true;
+  window_->Render();
+}
+
+void SectionView::showMesh()
+{
+  if (!showing_picture_)
+    return;
+  showing_picture_ = false;
+  renderer_->TexturedBackgroundOff();
+  actor_->SetVisibility(shown_ != nullptr);
+  outline_actor_->VisibilityOn();
+  window_->Render();
+}
+
+void SectionView::resizeEvent(QResizeEvent* event)
+{
+  QWidget::resizeEvent(event);
+  emit resized();
 }
 
 } // namespace frepstudio

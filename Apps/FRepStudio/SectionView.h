@@ -1,11 +1,15 @@
 // The 3-D view of the current cross-section: a QVTKOpenGLNativeWidget with the section's mesh,
-// the outline of the meshed box and labelled axes (vtkCubeAxesActor).
+// the outline of the meshed box and labelled axes (vtkCubeAxesActor). In "High quality" mode a
+// ray-cast picture of the section at the same camera (PictureWorker) replaces the mesh as the
+// renderer's background while the camera rests; any interaction shows the mesh again.
 #pragma once
 
 #include <QWidget>
 
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
+
+#include "Render/camera.h"
 
 #include <array>
 
@@ -18,6 +22,7 @@ class vtkOutlineSource;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkRenderer;
+class vtkTexture;
 
 namespace frepstudio
 {
@@ -43,11 +48,32 @@ public:
   /// Renders now and returns the picture of the render window (for screenshots).
   QImage renderToImage();
   vtkGenericOpenGLRenderWindow* renderWindow() const;
+
+  /// The view's camera as the headless renderers' camera (x1..x3 are the world).
+  frep::render::Camera camera() const;
+  /// The render window's size in device pixels (what a picture must have to fill it).
+  QSize pixelSize() const;
+  /// The background gradient's colours, bottom and top (what a picture's background must be).
+  std::array<float, 3> backgroundBottom() const;
+  std::array<float, 3> backgroundTop() const;
+  /// Shows `picture` (drawn at camera() and pixelSize()) in place of the mesh and the outline;
+  /// the axes stay. Cleared by showMesh(), setSection() and clearSection().
+  void showPicture(const QImage& picture);
+  void showMesh();
+  bool showingPicture() const { return showing_picture_; }
   QVTKOpenGLNativeWidget* vtkWidget() const { return widget_; }
 
 signals:
   /// The render window finished a frame (the section is on screen).
   void frameRendered();
+  /// The user started moving the camera (mouse or wheel) / stopped.
+  void interactionStarted();
+  void interactionEnded();
+  /// The view's size changed (a picture no longer fits it).
+  void resized();
+
+protected:
+  void resizeEvent(QResizeEvent* event) override;
 
 private:
   void resetCamera(const double bounds[6]);
@@ -62,6 +88,8 @@ private:
   vtkNew<vtkActor> outline_actor_;
   vtkNew<vtkCubeAxesActor> axes_;
   vtkSmartPointer<vtkPolyData> shown_;
+  vtkNew<vtkTexture> picture_texture_;
+  bool showing_picture_ = false;
 };
 
 } // namespace frepstudio

@@ -2,6 +2,7 @@
 
 #include "Eval/thread_pool.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -38,8 +39,17 @@ SpreadsheetPanel::SpreadsheetPanel(QWidget* parent)
   controls->addWidget(steps_);
   controls->addStretch(1);
   layout->addLayout(controls);
+  // On the status line, not beside the combo boxes: a wider row would widen the tab widget
+  // (its minimum is its widest page's) and move the window's splitter.
+  auto* status_row = new QHBoxLayout;
   status_ = new QLabel(this);
-  layout->addWidget(status_);
+  status_row->addWidget(status_, 1);
+  raycast_ = new QCheckBox(tr("Ray-cast"), this);
+  raycast_->setObjectName("spreadsheetRaycast");
+  raycast_->setToolTip(tr("Draw the cells by rays from the function itself (no facets, no "
+                          "detail lost below the grid) instead of meshing them"));
+  status_row->addWidget(raycast_);
+  layout->addLayout(status_row);
 
   auto* scroll = new QScrollArea(this);
   grid_widget_ = new QWidget(scroll);
@@ -52,6 +62,7 @@ SpreadsheetPanel::SpreadsheetPanel(QWidget* parent)
   connect(rows_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
   connect(columns_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
   connect(steps_, qOverload<int>(&QSpinBox::valueChanged), this, [this] { rebuild(); });
+  connect(raycast_, &QCheckBox::toggled, this, [this] { rebuild(); });
 }
 
 SpreadsheetPanel::~SpreadsheetPanel()
@@ -68,6 +79,16 @@ int SpreadsheetPanel::steps() const
 void SpreadsheetPanel::setSteps(int steps)
 {
   steps_->setValue(steps);
+}
+
+bool SpreadsheetPanel::raycast() const
+{
+  return raycast_->isChecked();
+}
+
+void SpreadsheetPanel::setRaycast(bool raycast)
+{
+  raycast_->setChecked(raycast);
 }
 
 int SpreadsheetPanel::rowCoordinate() const
@@ -180,6 +201,7 @@ void SpreadsheetPanel::rebuild()
     for (int c = 0; c < columns; ++c)
     {
       CellRequest request = sheet_.base;
+      request.raycast = raycast();
       std::map<std::string, double> values;
       request.fixed_values[row_axis] = value_of(row_axis, r, n);
       values["x" + std::to_string(row_axis + 4)] = request.fixed_values[row_axis];

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QGridLayout;
 class QLabel;
@@ -46,6 +47,9 @@ public:
   /// Cells per axis; the row and column coordinates (indices into x4..: 0 = x4; -1 = none).
   int steps() const;
   void setSteps(int steps);
+  /// Cells drawn by rays (the "Ray-cast" box) instead of meshed; default off.
+  bool raycast() const;
+  void setRaycast(bool raycast);
   int rowCoordinate() const;
   int columnCoordinate() const;
   /// Finished cells and all cells of the current grid (for tests and the status line).
@@ -69,6 +73,7 @@ private:
   QComboBox* rows_ = nullptr;
   QComboBox* columns_ = nullptr;
   QSpinBox* steps_ = nullptr;
+  QCheckBox* raycast_ = nullptr;
   QLabel* status_ = nullptr;
   QWidget* grid_widget_ = nullptr;
   QGridLayout* grid_ = nullptr;

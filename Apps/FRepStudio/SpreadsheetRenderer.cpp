@@ -1,6 +1,8 @@
 #include "SpreadsheetRenderer.h"
 
 #include "SectionMeshConversion.h"
+#include "SectionPicture.h"
+#include "SectionTape.h"
 
 #include "Compiler/attribute_rgb.h"
 #include "Mesh/surface.h"
@@ -9,37 +11,19 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 namespace frepstudio
 {
 
-QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::ThreadPool>& pool,
-  const std::function<bool()>& keep_going)
+namespace
 {
-  if (!request.model || request.model->x_dim() < 3)
-    return {};
-  frep::Specialisation specialisation;
-  specialisation.parameters = request.parameters;
-  specialisation.fixed.assign(static_cast<std::size_t>(request.model->x_dim()), std::nullopt);
-  for (std::size_t k = 0; k < request.fixed_values.size() && k + 3 < specialisation.fixed.size();
-       ++k)
-    specialisation.fixed[k + 3] = request.fixed_values[k];
-  const auto tape = request.model->specialise(specialisation);
 
-  frep::mesh::Grid grid;
-  grid.lo = request.lo;
-  grid.hi = request.hi;
-  grid.samples = { request.resolution, request.resolution, request.resolution };
-  frep::mesh::ExtractOptions options;
-  options.pool = pool;
-  options.progress = [&keep_going](double) { return keep_going(); };
-  const frep::mesh::ExtractResult result = frep::mesh::extract_surface(tape, grid, options);
-  if (!result.ok())
-    return {};
-
-  // The 3-D view's default direction (SectionView), closer than where the box's bounding sphere
-  // would fit: the box's corners leave the picture, but the shapes (usually well inside the
-  // box) are large enough to read in a small cell.
+// The 3-D view's default direction (SectionView), closer than where the box's bounding sphere
+// would fit: the box's corners leave the picture, but the shapes (usually well inside the
+// box) are large enough to read in a small cell.
+frep::render::Camera cell_camera(const CellRequest& request)
+{
   constexpr double kFill = 1.3;
   const double angle = 30.0;
   frep::render::Camera camera;
@@ -59,9 +43,60 @@ QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::Threa
     camera.position[i] = centre[i] + direction[i] / length * distance;
   camera.focal_point = centre;
   camera.view_up = { 0, 1, 0 };
+  return camera;
+}
 
+constexpr std::array<float, 3> kCellBackground{ 0.24F, 0.26F, 0.31F }; // sRGB
+
+QImage raycast_cell(const CellRequest& request, const std::function<bool()>& keep_going)
+{
+  SectionPictureRequest picture;
+  picture.model = request.model;
+  picture.s_dim = request.s_dim;
+  picture.parameters = request.parameters;
+  picture.fixed_values = request.fixed_values;
+  picture.lo = request.lo;
+  picture.hi = request.hi;
+  picture.camera = cell_camera(request);
+  picture.width = picture.height = request.pixels;
+  picture.background_bottom = picture.background_top = kCellBackground;
+  picture.supersample = 3; // small cells: silhouettes are most of what they show
+  return section_picture(picture, keep_going);
+}
+
+} // namespace
+
+QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::ThreadPool>& pool,
+  const std::function<bool()>& keep_going)
+{
+  if (!request.model || request.model->x_dim() < 3)
+    return {};
+  if (request.raycast)
+    return raycast_cell(request, keep_going);
+  std::shared_ptr<const frep::Tape> tape;
+  try
+  {
+    tape = section_tape(*request.model, request.parameters, request.fixed_values);
+  }
+  catch (const std::exception&)
+  {
+    return {};
+  }
+
+  frep::mesh::Grid grid;
+  grid.lo = request.lo;
+  grid.hi = request.hi;
+  grid.samples = { request.resolution, request.resolution, request.resolution };
+  frep::mesh::ExtractOptions options;
+  options.pool = pool;
+  options.progress = [&keep_going](double) { return keep_going(); };
+  const frep::mesh::ExtractResult result = frep::mesh::extract_surface(tape, grid, options);
+  if (!result.ok())
+    return {};
+
+  const frep::render::Camera camera = cell_camera(request);
   frep::render::Image picture(request.pixels, request.pixels,
-    frep::render::srgb(0.24, 0.26, 0.31));
+    frep::render::srgb(kCellBackground[0], kCellBackground[1], kCellBackground[2]));
   std::vector<float> colours;
   frep::render::MeshInput mesh;
   mesh.points = result.surface.points;
@@ -79,28 +114,13 @@ QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::Threa
   }
   else
   {
-    // hfp's face colour (50, 200, 80), as in the 3-D view.
-    mesh.colour = { frep::render::srgb_to_linear(50 / 255.0F),
-      frep::render::srgb_to_linear(200 / 255.0F), frep::render::srgb_to_linear(80 / 255.0F) };
+    mesh.colour = default_face_colour_linear(); // as in the 3-D view
   }
   frep::render::RenderStyle style;
   style.threads = 1; // cells are small; the mesher already uses the cores
   if (!frep::render::render_mesh(picture, camera, mesh, style).ok() || !keep_going())
     return {};
-
-  QImage image(picture.width, picture.height, QImage::Format_RGB888);
-  for (int y = 0; y < picture.height; ++y)
-  {
-    uchar* row = image.scanLine(y);
-    for (int x = 0; x < picture.width; ++x)
-    {
-      const float* p = picture.pixel(x, y);
-      for (int c = 0; c < 3; ++c)
-        row[3 * x + c] = static_cast<uchar>(
-          std::lround(std::clamp(frep::render::linear_to_srgb(p[c]), 0.0F, 1.0F) * 255));
-    }
-  }
-  return image;
+  return to_qimage(picture);
 }
 
 } // namespace frepstudio

@@ -1,6 +1,7 @@
 // One cell of the spreadsheet of cross-sections: the section of a model at given fixed values,
-// meshed by the engine and drawn by the headless software renderer (Mapping/Render), so cells
-// are made on a worker thread without touching OpenGL.
+// meshed by the engine and drawn by the headless software renderer (Multimedia/Render), or drawn
+// by rays from the function itself (Multimedia/Raycast: no facets, no detail lost below the
+// grid), so cells are made on a worker thread without touching OpenGL.
 #pragma once
 
 #include "Compiler/model.h"
@@ -30,9 +31,10 @@ struct CellRequest
   std::array<double, 3> hi{ 10, 10, 10 };
   int resolution = 40; ///< samples per axis
   int pixels = 160;    ///< the picture is pixels x pixels
+  bool raycast = false; ///< draw by rays instead of meshing at `resolution`
 };
 
-/// Meshes and draws one cell; an empty picture when cancelled (`keep_going` returned false) or
+/// Meshes and draws (or ray-casts) one cell; an empty picture when cancelled (`keep_going` returned false) or
 /// when the model cannot be cut (x_dim < 3). The camera matches the 3-D view's default one
 /// (y up, looking from +x +y +z), fitted to the box, so every cell is framed alike.
 QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::ThreadPool>& pool,

@@ -127,6 +127,10 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   statusBar()->addPermanentWidget(status_, 1);
 
   worker_ = new MeshWorker(this);
+  pictures_ = new PictureWorker(this);
+  picture_timer_.setSingleShot(true);
+  picture_timer_.setInterval(kPictureRestMs);
+  connect(&picture_timer_, &QTimer::timeout, this, &StudioMainWindow::requestPicture);
 
   parse_timer_.setSingleShot(true);
   parse_timer_.setInterval(kParseDebounceMs);
@@ -164,6 +168,32 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
     status_->setText(tr("Section: %1").arg(message));
   });
   connect(view_, &SectionView::frameRendered, this, &StudioMainWindow::onFrameRendered);
+  // High quality: the mesh while the camera moves, the ray-cast picture once it rests.
+  connect(view_, &SectionView::interactionStarted, this, [this] {
+    picture_timer_.stop();
+    pictures_->cancel();
+    view_->showMesh();
+  });
+  auto picture_later = [this] {
+    if (highQuality())
+      picture_timer_.start();
+  };
+  connect(view_, &SectionView::interactionEnded, this, picture_later);
+  connect(view_, &SectionView::resized, this, [this, picture_later] {
+    if (view_->showingPicture())
+      view_->showMesh();
+    picture_later();
+  });
+  connect(pictures_, &PictureWorker::pictureReady, this,
+    [this](quint64, const QImage& picture, double seconds) {
+      if (!highQuality() || picture.isNull())
+        return;
+      view_->showPicture(picture);
+      status_->setText(tr("high quality: ray-cast %1 x %2 pixels in %3 ms")
+                         .arg(picture.width())
+                         .arg(picture.height())
+                         .arg(seconds * 1000, 0, 'f', 0));
+    });
 
   buildMenus();
   resize(1280, 800);
@@ -172,8 +202,9 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
 
 StudioMainWindow::~StudioMainWindow()
 {
-  // Stop the mesher before the widgets it reports to go away.
+  // Stop the mesher and the ray caster before the widgets they report to go away.
   worker_->cancel();
+  pictures_->cancel();
 }
 
 void StudioMainWindow::buildMenus()
@@ -247,6 +278,20 @@ void StudioMainWindow::buildMenus()
     QKeySequence(QStringLiteral("Ctrl+1")));
   view->addAction(tr("S&preadsheet"), this, [this] { showSpreadsheet(true); },
     QKeySequence(QStringLiteral("Ctrl+2")));
+  view->addSeparator();
+  high_quality_ = view->addAction(tr("&High Quality (Ray-Cast)"));
+  high_quality_->setObjectName("highQualityAction");
+  high_quality_->setCheckable(true);
+  high_quality_->setShortcut(QKeySequence(QStringLiteral("Ctrl+H")));
+  high_quality_->setToolTip(tr("Draw the resting section by rays from the function itself (no "
+                               "facets, no detail lost below the grid)"));
+  connect(high_quality_, &QAction::toggled, this, [this](bool on) {
+    picture_timer_.stop();
+    pictures_->cancel();
+    view_->showMesh();
+    if (on)
+      requestPicture();
+  });
 
   QMenu* examples_menu = menuBar()->addMenu(tr("&Examples"));
   for (const auto& [title, path] : examples())
@@ -393,6 +438,9 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
   }
   request.resolutions = std::move(resolutions);
   section_failed_ = false;
+  last_request_ = request;
+  picture_timer_.stop();
+  pictures_->cancel(); // the section changes: a picture of the old one would be stale
 
   SpreadsheetPanel::Sheet sheet;
   sheet.base.model = request.model;
@@ -424,6 +472,8 @@ void StudioMainWindow::onSectionReady(const SectionMesh& mesh)
   reset_camera_ = false;
   shown_generation_ = mesh.generation;
   refined_shown_ = mesh.resolution >= kRefinedResolution;
+  if (refined_shown_ && highQuality())
+    picture_timer_.start();
   // A hidden view (the spreadsheet tab is in front) draws no frame until it is shown again.
   if (view_->isVisible())
     awaiting_frame_ = mesh;
@@ -435,6 +485,37 @@ void StudioMainWindow::onSectionReady(const SectionMesh& mesh)
                      .arg(mesh.cells)
                      .arg(surface ? tr("triangles") : tr("segments"))
                      .arg(mesh.seconds * 1000, 0, 'f', 0));
+}
+
+void StudioMainWindow::setHighQuality(bool on)
+{
+  high_quality_->setChecked(on);
+}
+
+bool StudioMainWindow::highQuality() const
+{
+  return high_quality_ && high_quality_->isChecked();
+}
+
+void StudioMainWindow::requestPicture()
+{
+  if (!highQuality() || !refined_shown_ || section_failed_ || !last_request_ ||
+    !view_->section() || shown_generation_ != worker_->latestGeneration())
+    return;
+  SectionPictureRequest request;
+  request.model = last_request_->model;
+  request.s_dim = last_request_->s_dim;
+  request.parameters = last_request_->parameters;
+  request.fixed_values = last_request_->fixed_values;
+  request.lo = last_request_->lo;
+  request.hi = last_request_->hi;
+  request.camera = view_->camera();
+  const QSize size = view_->pixelSize();
+  request.width = size.width();
+  request.height = size.height();
+  request.background_bottom = view_->backgroundBottom();
+  request.background_top = view_->backgroundTop();
+  pictures_->request(std::move(request));
 }
 
 void StudioMainWindow::onFrameRendered()
@@ -451,7 +532,7 @@ void StudioMainWindow::onFrameRendered()
 bool StudioMainWindow::isSettled() const
 {
   return !parse_timer_.isActive() && analyses_running_ == 0 && !refine_timer_.isActive() &&
-    !worker_->busy() && !awaiting_frame_ &&
+    !worker_->busy() && !awaiting_frame_ && !picture_timer_.isActive() && !pictures_->busy() &&
     !(spreadsheet_->isVisible() && spreadsheet_->isComputing());
 }
 

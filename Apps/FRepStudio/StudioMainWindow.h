@@ -1,12 +1,15 @@
 // FRepStudio's main window: the HyperFun editor beside the live 3-D cross-section, the model
 // panel (object, x4.. sliders, a[]), the error list, and the file menus. The text is analysed
 // (parsed and compiled) on a short debounce off the UI thread; the section is meshed off the UI
-// thread, coarse first and refined when the values rest (MeshWorker).
+// thread, coarse first and refined when the values rest (MeshWorker); in "High quality" mode
+// the refined section is then ray-cast at the view's camera (PictureWorker) and shown in place of
+// the mesh until the camera moves.
 #pragma once
 
 #include "HyperFunEditor.h"
 #include "MeshWorker.h"
 #include "ModelAnalysis.h"
+#include "PictureWorker.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -16,6 +19,7 @@
 #include <optional>
 
 class QTabWidget;
+class QAction;
 class QLabel;
 class QMenu;
 
@@ -40,6 +44,8 @@ public:
   /// Quiet time before a text change is analysed / before a value change is refined.
   static constexpr int kParseDebounceMs = 300;
   static constexpr int kRefineRestMs = 150;
+  /// Quiet time after the camera or the window moved before the "High quality" picture.
+  static constexpr int kPictureRestMs = 200;
 
   explicit StudioMainWindow(QWidget* parent = nullptr);
   ~StudioMainWindow() override;
@@ -58,8 +64,8 @@ public:
   bool setValue(const QString& name, double value);
 
   /// True when nothing is pending: the text is analysed, and the refined section of the current
-  /// values is on screen (or the model has no section to show), and a visible spreadsheet has
-  /// all its cells.
+  /// values is on screen (or the model has no section to show), its High quality picture too
+  /// when that mode is on, and a visible spreadsheet has all its cells.
   bool isSettled() const;
   /// The current file ("" for an unnamed model).
   QString currentFile() const { return file_; }
@@ -74,6 +80,10 @@ public:
   PathPanel* pathPanel() const { return path_; }
   /// Shows the spreadsheet tab (true) or the 3-D section tab (View > Spreadsheet / Section).
   void showSpreadsheet(bool show);
+  /// View > High Quality: the resting section ray-cast (no facets) instead of its mesh.
+  void setHighQuality(bool on);
+  bool highQuality() const;
+
   /// Opens a mapping file in the Mapping tab and shows it; false when it cannot be read.
   bool showMapping(const QString& path);
 
@@ -106,6 +116,8 @@ private:
   void onValuesChanged();
   void onSectionReady(const SectionMesh& mesh);
   void onFrameRendered();
+  /// Ray-casts the shown refined section at the view's camera (High quality mode).
+  void requestPicture();
   bool maybeSave();
   bool saveTo(const QString& path);
   void openFile();
@@ -125,6 +137,10 @@ private:
   QLabel* status_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   MeshWorker* worker_ = nullptr;
+  PictureWorker* pictures_ = nullptr;
+  QAction* high_quality_ = nullptr;
+  QTimer picture_timer_;
+  std::optional<SectionRequest> last_request_; ///< the newest section request (its values)
 
   QString file_;
   QTimer parse_timer_;

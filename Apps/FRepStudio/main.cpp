@@ -1,12 +1,13 @@
 // FRepStudio: the HyperFun editor with a live 3-D view of n-D models' cross-sections.
 //   FRepStudio [MODEL.hf]
 //   FRepStudio --screenshot OUT.png MODEL.hf [--set x4=0.3]... [--object NAME] [--size 1280x800]
-//              [--spreadsheet] [--mapping FILE.json]
+//              [--spreadsheet] [--mapping FILE.json] [--high-quality] [--raycast-cells]
 // The screenshot mode shows the window once, waits for the refined section, writes OUT.png and
 // exits (0 ok, 1 error): for tests and the documentation, under xvfb-run on a headless machine.
 #include "ErrorListWidget.h"
 #include "MappingEditor.h"
 #include "ScreenshotCapture.h"
+#include "SpreadsheetPanel.h"
 #include "StudioMainWindow.h"
 
 #include <QApplication>
@@ -41,11 +42,16 @@ int main(int argc, char* argv[])
     "120");
   const QCommandLineOption spreadsheet("spreadsheet",
     "Show the spreadsheet of cross-sections (the screenshot waits for all its cells).");
+  const QCommandLineOption high_quality("high-quality",
+    "View > High Quality: the resting section ray-cast instead of meshed.");
+  const QCommandLineOption raycast_cells("raycast-cells",
+    "The spreadsheet's cells ray-cast instead of meshed (its Ray-cast box).");
   const QCommandLineOption mapping("mapping", "Open a mapping file (JSON) in the Mapping tab.",
     "FILE");
   const QCommandLineOption library("library",
     "A user library (frepkit_user.h) whose functions models may call; repeatable.", "FILE");
-  parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, mapping, library });
+  parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, high_quality,
+    raycast_cells, mapping, library });
   parser.addPositionalArgument("model", "The HyperFun file to open.", "[MODEL.hf]");
   parser.process(app);
 
@@ -86,6 +92,8 @@ int main(int argc, char* argv[])
     return 1;
   }
   window.show();
+  window.setHighQuality(parser.isSet(high_quality));
+  window.spreadsheetPanel()->setRaycast(parser.isSet(raycast_cells));
   if (parser.isSet(spreadsheet))
     window.showSpreadsheet(true);
   if (parser.isSet(mapping) && !window.showMapping(parser.value(mapping)))

@@ -106,6 +106,35 @@ std::size_t engineTriangles(const QString& file, const char* object,
     .surface.cell_count();
 }
 
+/// Pixels of `image` whose hue is hfp's face green rather than the grey-blue background and the
+/// white lines: green above red and blue (however the shading darkens it).
+int greenPixels(const QImage& image)
+{
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+    {
+      const QColor c = image.pixelColor(x, y);
+      count += c.green() > c.red() + 8 && c.green() > c.blue() + 8;
+    }
+  return count;
+}
+
+/// Pixels of `image` that differ from its top-left pixel (the cell's background).
+double coveredFraction(const QImage& image)
+{
+  const QColor background = image.pixelColor(0, 0);
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+    {
+      const QColor c = image.pixelColor(x, y);
+      count += std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
+          std::abs(c.blue() - background.blue()) > 24;
+    }
+  return static_cast<double>(count) / (image.width() * image.height());
+}
+
 } // namespace
 
 class TestFRepStudio : public QObject
@@ -121,6 +150,8 @@ private slots:
   void objectPickerAndParameters();
   void attributesColourTheSection();
   void spreadsheetCellMovesSliders();
+  void spreadsheetRaycastCells();
+  void highQualityViewRayCasts();
   void mappingEditorRoundTrip();
   void pathScrubAndPlay();
   void openCloseCycles();
@@ -388,6 +419,71 @@ void TestFRepStudio::spreadsheetCellMovesSliders()
   QVERIFY(window->sectionView()->isVisible());
   QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
     engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.75, 0.5 }, 128));
+}
+
+void TestFRepStudio::spreadsheetRaycastCells()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  QVERIFY(window->loadFile(kMeta5D));
+  window->showSpreadsheet(true);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  SpreadsheetPanel* sheet = window->spreadsheetPanel();
+  QCOMPARE(sheet->finishedCells(), 25);
+  const QImage meshed = sheet->cell(2, 2)->icon().pixmap(120).toImage();
+
+  // The "Ray-cast" box draws the same 25 cells by rays: the same shapes in the same places
+  // (coverage within a few per cent of the meshed cells'), not the same pixels.
+  sheet->setRaycast(true);
+  QCOMPARE(sheet->finishedCells(), 0);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(sheet->finishedCells(), 25);
+  const QImage cast = sheet->cell(2, 2)->icon().pixmap(120).toImage();
+  QVERIFY(!cast.isNull());
+  QVERIFY(testing::compare_images(cast, meshed).changed_pixels > 0.01);
+  const double meshed_cover = coveredFraction(meshed), cast_cover = coveredFraction(cast);
+  QVERIFY2(meshed_cover > 0.05 && std::abs(cast_cover - meshed_cover) < 0.03,
+    qPrintable(QString("covered: meshed %1, ray-cast %2").arg(meshed_cover).arg(cast_cover)));
+  for (const auto& [row, column] : { std::pair{ 0, 0 }, { 0, 4 }, { 4, 0 }, { 4, 4 } })
+    QVERIFY(coveredFraction(sheet->cell(row, column)->icon().pixmap(120).toImage()) > 0.03);
+}
+
+void TestFRepStudio::highQualityViewRayCasts()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  window->setModelText("m(x[3], a[1])\n{\n  m = 25 - x[1]^2 - x[2]^2 - x[3]^2;\n}\n");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  SectionView* view = window->sectionView();
+  QVERIFY(!view->showingPicture());
+  const QImage meshed = view->renderToImage();
+
+  // The resting section ray-cast at the view's camera: the same sphere, as large (13110 and
+  // 13221 pixels when written), shaded differently.
+  window->setHighQuality(true);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(view->showingPicture());
+  const QImage cast = view->renderToImage();
+  // Written next to the test binary, to look at.
+  meshed.save(QStringLiteral(FREPSTUDIO_TEST_OUTPUT) + "/high-quality-mesh.png");
+  cast.save(QStringLiteral(FREPSTUDIO_TEST_OUTPUT) + "/high-quality-raycast.png");
+  const int meshed_green = greenPixels(meshed), cast_green = greenPixels(cast);
+  QVERIFY2(meshed_green > 10000 && std::abs(cast_green - meshed_green) < 0.03 * meshed_green,
+    qPrintable(QString("sphere pixels: meshed %1, ray-cast %2").arg(meshed_green).arg(cast_green)));
+  QVERIFY(testing::compare_images(cast, meshed).changed_pixels > 0.01);
+
+  // Moving the camera shows the mesh; the picture of the new view follows when it rests.
+  QWidget* canvas = view->vtkWidget();
+  const QPoint centre = canvas->rect().center();
+  QTest::mousePress(canvas, Qt::LeftButton, {}, centre);
+  QTest::mouseMove(canvas, centre + QPoint(60, 20));
+  QVERIFY(!view->showingPicture());
+  QTest::mouseRelease(canvas, Qt::LeftButton, {}, centre + QPoint(60, 20));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(view->showingPicture());
+
+  window->setHighQuality(false);
+  QVERIFY(!view->showingPicture());
 }
 
 void TestFRepStudio::mappingEditorRoundTrip()

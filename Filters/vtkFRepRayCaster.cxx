@@ -261,8 +261,10 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
       }
       return stop;
     };
-    const frep::raycast::Result result = frep::raycast::render(
-      picture, in.Camera, shape, in.Floor ? &*in.Floor : nullptr, style, &depth, cancel);
+    // Progress comes on this thread only (raycast::render's promise): UpdateProgress is safe.
+    const auto progress = [this](double fraction) { this->UpdateProgress(fraction); };
+    const frep::raycast::Result result = frep::raycast::render(picture, in.Camera, shape,
+      in.Floor ? &*in.Floor : nullptr, style, &depth, cancel, progress);
     this->Rays = result.statistics.rays;
     this->Hits = result.statistics.hits;
     if (!result.ok())

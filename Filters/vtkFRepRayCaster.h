@@ -38,8 +38,10 @@
  * upstream error, reported there) gives an empty image without a message; a refused request
  * (dimension, bounds, view) one error and an empty image (empty whole extent).
  *
- * PROGRESS AND ABORT: UpdateProgress(0) when the data pass starts and 1 when the picture is
- * complete (the ray caster has no finer progress report). The ray caster polls a cancel
+ * PROGRESS AND ABORT: UpdateProgress(0) when the data pass starts, then rising fractions as
+ * the ray caster's tiles finish (reported on the executing thread only: the pixel pass is the
+ * first 70 %, the edge pixels' supersampling the rest) and 1 when the picture is complete. The
+ * ray caster polls a cancel
  * callback per tile of 16 x 16 pixels from its worker threads: on the thread that executes the
  * filter it calls CheckAbort() (VTK's full check: AbortExecute, the container algorithm, an
  * aborted upstream), which must not run elsewhere; every thread also reads the atomic

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <thread>
 
 namespace frep::raycast
 {
@@ -325,7 +326,8 @@ Result render(render::Image& target,
   const Floor* floor,
   const Style& style,
   std::vector<float>* depth,
-  const std::function<bool()>& cancel)
+  const std::function<bool()>& cancel,
+  const std::function<void(double)>& progress)
 {
   const auto start = std::chrono::steady_clock::now();
   Result result;
@@ -393,6 +395,24 @@ Result render(render::Image& target,
     }
     return cancelled.load(std::memory_order_relaxed);
   };
+  // Progress: tiles finished per pass, reported only on the calling thread (a participant of
+  // the pool), so the callback needs no locking; the pixel pass is the first 70 %.
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<std::size_t> finished{ 0 };
+  double reported = 0.0;
+  const auto report = [&](double from, double span, std::size_t total)
+  {
+    const std::size_t done = finished.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (progress && std::this_thread::get_id() == caller && total > 0)
+    {
+      const double fraction = from + span * static_cast<double>(done) / static_cast<double>(total);
+      if (fraction >= reported + 0.01) // at most about 100 calls
+      {
+        reported = fraction;
+        progress(fraction);
+      }
+    }
+  };
 
   // 1. One ray per pixel, tile by tile.
   const int tiles_x = (target.width + kTile - 1) / kTile, tiles_y = (target.height + kTile - 1) / kTile;
@@ -421,6 +441,7 @@ Result render(render::Image& target,
           seen[i] = shade_sample(c, pixels, w, x, y, hit, first.rgba.data() + 4 * i, first_depth[i]);
         }
       }
+      report(0.0, ss > 1 ? 0.7 : 1.0, static_cast<std::size_t>(tiles_x) * tiles_y);
     });
 
   // 2. Edges: supersample x supersample rays per pixel, averaged like render::downsample.
@@ -436,6 +457,12 @@ Result render(render::Image& target,
       const int x = static_cast<int>(e % target.width), y = static_cast<int>(e / target.width);
       by_tile[static_cast<std::size_t>(y / kTile) * tiles_x + x / kTile].push_back(e);
     }
+    std::size_t edge_tiles = 0;
+    for (const auto& tile : by_tile)
+    {
+      edge_tiles += tile.empty() ? 0 : 1;
+    }
+    finished = 0;
     pool.parallel_for(by_tile.size(),
       [&](std::size_t t, int slot)
       {
@@ -490,6 +517,7 @@ Result render(render::Image& target,
           out[3] = static_cast<float>(a / n);
           first_depth[e] = nearest;
         }
+        report(0.7, 0.3, edge_tiles);
       });
   }
   result.statistics.edge_seconds =
@@ -518,6 +546,10 @@ Result render(render::Image& target,
   if (depth)
   {
     *depth = std::move(first_depth);
+  }
+  if (progress && reported < 1.0)
+  {
+    progress(1.0);
   }
   result.statistics.seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

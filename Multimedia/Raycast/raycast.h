@@ -128,12 +128,16 @@ struct Result
 /// receives per output pixel the world distance from the eye along the view direction of the
 /// nearest sample drawn (infinity where nothing was). `cancel`, when given, is polled per tile
 /// (return true to stop: the picture is then incomplete and the result says "cancelled").
+/// `progress`, when given, is called on the calling thread only (never from the pool's other
+/// threads, so a VTK filter may pass UpdateProgress), with rising fractions in [0, 1] as tiles
+/// finish (steps of at least 0.01), and with 1 when the picture is complete.
 Result render(render::Image& target,
   const render::Camera& camera,
   const Shape& shape,
   const Floor* floor = nullptr,
   const Style& style = {},
   std::vector<float>* depth = nullptr,
-  const std::function<bool()>& cancel = {});
+  const std::function<bool()>& cancel = {},
+  const std::function<void(double)>& progress = {});
 
 } // namespace frep::raycast

@@ -492,8 +492,13 @@ int TestFRepRayCaster(int, char*[])
     r->AddObserver(vtkCommand::ProgressEvent, progress);
     r->Update();
     FREPKIT_CHECK(failures,
-      progress->Values.size() >= 2 && progress->Values.front() == 0.0 &&
+      progress->Values.size() > 2 && progress->Values.front() == 0.0 &&
         progress->Values.back() == 1.0);
+    // Per tile in between, rising.
+    FREPKIT_CHECK(failures,
+      std::is_sorted(progress->Values.begin(), progress->Values.end()) &&
+        std::any_of(progress->Values.begin(), progress->Values.end(),
+          [](double v) { return v > 0.0 && v < 1.0; }));
     FREPKIT_CHECK(failures, r->GetOutput()->GetNumberOfPoints() == 320 * 240);
     progress->Abort = true;
     r->Modified();

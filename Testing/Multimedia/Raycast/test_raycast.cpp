@@ -11,9 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace
 {
@@ -231,6 +234,29 @@ TEST(Raycast, CancelStopsTheWork)
   const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr,
     lambert_style(), nullptr, [] { return true; });
   EXPECT_EQ(r.error, "cancelled");
+}
+
+TEST(Raycast, ProgressRisesToOneOnTheCallingThread)
+{
+  render::Image image(160, 160);
+  rc::Style style = lambert_style();
+  style.render.threads = 2;
+  style.render.supersample = 2;
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<double> values;
+  bool elsewhere = false;
+  const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, style,
+    nullptr, {}, [&](double f) {
+      elsewhere = elsewhere || std::this_thread::get_id() != caller;
+      values.push_back(f);
+    });
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_FALSE(elsewhere);
+  ASSERT_GE(values.size(), 3u); // 100 tiles: the caller finishes some of them
+  EXPECT_TRUE(std::is_sorted(values.begin(), values.end()));
+  EXPECT_GT(values.front(), 0.0);
+  EXPECT_LT(values.front(), 1.0);
+  EXPECT_EQ(values.back(), 1.0);
 }
 
 } // namespace

@@ -14,7 +14,6 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkTexture.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkOutlineSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -108,9 +107,7 @@ SectionView::~SectionView() = default;
 void SectionView::setSection(vtkPolyData* poly_data, const std::array<double, 3>& lo,
   const std::array<double, 3>& hi, bool reset_camera)
 {
-  showing_picture_ = false;
-  renderer_->TexturedBackgroundOff();
-  outline_actor_->VisibilityOn();
+  dropPicture();
   shown_ = poly_data;
   mapper_->SetInputData(poly_data);
   vtkDataArray* scalars = poly_data ? poly_data->GetPointData()->GetScalars() : nullptr;
@@ -159,9 +156,7 @@ void SectionView::resetCamera(const double bounds[6])
 
 void SectionView::clearSection()
 {
-  showing_picture_ = false;
-  renderer_->TexturedBackgroundOff();
-  outline_actor_->VisibilityOn();
+  dropPicture();
   shown_ = nullptr;
   mapper_->SetInputData(nullptr);
   actor_->VisibilityOff();
@@ -242,14 +237,19 @@ void SectionView::showPicture(const QImage& picture)
   window_->Render();
 }
 
+void SectionView::dropPicture()
+{
+  showing_picture_ = false;
+  renderer_->TexturedBackgroundOff();
+  outline_actor_->VisibilityOn();
+}
+
 void SectionView::showMesh()
 {
   if (!showing_picture_)
     return;
-  showing_picture_ = false;
-  renderer_->TexturedBackgroundOff();
+  dropPicture();
   actor_->SetVisibility(shown_ != nullptr);
-  outline_actor_->VisibilityOn();
   window_->Render();
 }
 

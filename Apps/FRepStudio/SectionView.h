@@ -77,6 +77,8 @@ protected:
 
 private:
   void resetCamera(const double bounds[6]);
+  /// Back to the gradient background and the outline (the caller sets the mesh's visibility).
+  void dropPicture();
 
   QVTKOpenGLNativeWidget* widget_ = nullptr;
   vtkNew<vtkGenericOpenGLRenderWindow> window_;

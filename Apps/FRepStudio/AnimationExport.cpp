@@ -101,10 +101,7 @@ bool AnimationExport::start(const QString& model_text,
   {
     arguments << "--object" << object;
   }
-  for (const QString& library : libraries_)
-  {
-    arguments << "--library" << library;
-  }
+  arguments << userInputArguments(inputs_);
   cancelled_ = false;
   process_.start(program, arguments);
   if (!process_.waitForStarted(10000))

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "Plan/mapping_spec.h"
+#include "UserInputs.h"
 
 #include <QObject>
 #include <QProcess>
@@ -35,7 +36,7 @@ public:
     const QString& output_directory,
     QString* error);
   /// User libraries passed on to frepkit map (--library), for models that call their functions.
-  void setUserLibraries(const QStringList& paths) { libraries_ = paths; }
+  void setUserInputs(const UserInputs& inputs) { inputs_ = inputs; }
   /// Stops the export (SIGTERM: frepkit keeps the frames it finished and removes temporaries).
   void cancel();
   bool isRunning() const { return process_.state() != QProcess::NotRunning; }
@@ -49,7 +50,7 @@ signals:
   void finished(bool ok, const QString& message);
 
 private:
-  QStringList libraries_;
+  UserInputs inputs_;
   void poll();
   void processFinished(int code, QProcess::ExitStatus status);
 

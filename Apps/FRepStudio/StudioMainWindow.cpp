@@ -3,6 +3,7 @@
 #include "AnimationExport.h"
 #include "DurableSave.h"
 #include "Language/user_library.h"
+#include "shape_files.h"
 
 #include "CoordinatePanel.h"
 #include "ExamplesDirectory.h"
@@ -630,10 +631,10 @@ void StudioMainWindow::closeEvent(QCloseEvent* event)
     event->ignore();
 }
 
-bool StudioMainWindow::setUserLibraries(const QStringList& paths, QString* error)
+bool StudioMainWindow::setUserInputs(const UserInputs& inputs, QString* error)
 {
   auto registry = std::make_shared<frep::UserFunctionRegistry>();
-  for (const QString& path : paths)
+  for (const QString& path : inputs.libraries)
   {
     const frep::UserLibraryResult r = frep::load_user_library(path.toStdString(), *registry);
     if (!r.ok())
@@ -643,10 +644,22 @@ bool StudioMainWindow::setUserLibraries(const QStringList& paths, QString* error
       return false;
     }
   }
-  users_ = paths.isEmpty() ? nullptr : std::move(registry);
-  userLibraries_.clear();
-  for (const QString& path : paths)
-    userLibraries_ << QFileInfo(path).absoluteFilePath(); // the export runs elsewhere
+  for (const QString& spec : inputs.shapes)
+  {
+    const std::string e =
+      frepkit::add_shape_file(spec.toStdString(), inputs.unsignedDistance, *registry);
+    if (!e.empty())
+    {
+      if (error)
+        *error = "--shape " + QString::fromStdString(e);
+      return false;
+    }
+  }
+  const bool none = inputs.libraries.isEmpty() && inputs.shapes.isEmpty();
+  users_ = none ? nullptr : std::move(registry);
+  userInputs_ = absoluteUserInputs(inputs);
+  if (!editor_->toPlainText().isEmpty())
+    startAnalysis(); // a model that calls the new names parses now
   return true;
 }
 
@@ -658,7 +671,7 @@ AnimationExport* StudioMainWindow::exportAnimation(const QString& directory, QSt
     spec.animation.path = path_->path();
   }
   auto* job = new AnimationExport(this);
-  job->setUserLibraries(userLibraries_);
+  job->setUserInputs(userInputs_);
   const QString object = QString::fromStdString(panel_->currentObject());
   if (!job->start(editor_->toPlainText(), object, spec, directory, error))
   {

@@ -10,6 +10,7 @@
 #include "MeshWorker.h"
 #include "ModelAnalysis.h"
 #include "PictureWorker.h"
+#include "UserInputs.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -52,10 +53,11 @@ public:
 
   /// Opens a model file (no unsaved-changes prompt: see openFile()). False when unreadable.
   bool loadFile(const QString& path);
-  /// Loads user libraries (frepkit_user.h) whose functions models may call; they are also
-  /// passed to the animation export. False and `error` (naming the library and the function)
-  /// when one cannot be loaded; nothing changes then.
-  bool setUserLibraries(const QStringList& paths, QString* error);
+  /// Loads user libraries (frepkit_user.h) and shape files (name=FILE) whose functions models
+  /// may call; they are also passed to the animation export. False and `error` (naming the
+  /// library and the function, or the shape and what is wrong with its file) when one cannot be
+  /// loaded; nothing changes then.
+  bool setUserInputs(const UserInputs& inputs, QString* error);
   /// Replaces the text as an unnamed model.
   void setModelText(const QString& text, const QString& name = QString());
   /// Selects an object now, or when the next analysis lists it.
@@ -107,7 +109,7 @@ protected:
 
 private:
   std::shared_ptr<const frep::UserFunctionRegistry> users_;
-  QStringList userLibraries_;
+  UserInputs userInputs_; // absolute paths, for the export
   void buildMenus();
   void startAnalysis();
   void applyAnalysis(ModelAnalysis analysis);

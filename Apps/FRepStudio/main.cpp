@@ -50,16 +50,23 @@ int main(int argc, char* argv[])
     "FILE");
   const QCommandLineOption library("library",
     "A user library (frepkit_user.h) whose functions models may call; repeatable.", "FILE");
+  const QCommandLineOption shape("shape",
+    "A mesh (.stl, .obj, .ply, .vtp: signed distance, >= 0 inside) or a volume (.vti[:ISO]) "
+    "that models call as name(x); repeatable.", "NAME=FILE");
+  const QCommandLineOption unsigned_distance("unsigned-distance",
+    "Accept open or non-manifold meshes for --shape: their F is minus the unsigned distance.");
   parser.addOptions({ screenshot, set, object, size, timeout, spreadsheet, high_quality,
-    raycast_cells, mapping, library });
+    raycast_cells, mapping, library, shape, unsigned_distance });
   parser.addPositionalArgument("model", "The HyperFun file to open.", "[MODEL.hf]");
   parser.process(app);
 
   frepstudio::StudioMainWindow window;
-  QString library_error;
-  if (!window.setUserLibraries(parser.values(library), &library_error))
+  QString inputs_error;
+  const frepstudio::UserInputs inputs{ parser.values(library), parser.values(shape),
+    parser.isSet(unsigned_distance) };
+  if (!window.setUserInputs(inputs, &inputs_error))
   {
-    std::fprintf(stderr, "FRepStudio: %s\n", qPrintable(library_error));
+    std::fprintf(stderr, "FRepStudio: %s\n", qPrintable(inputs_error));
     return 1;
   }
   const QStringList sizes = parser.value(size).split('x');

@@ -1,6 +1,7 @@
 #include "user_inputs.h"
 
 #include "Language/user_library.h"
+#include "shape_files.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
@@ -40,7 +41,10 @@ std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInp
   }
   for (const std::string& spec : inputs.shapes)
   {
-    add_shape_input(spec, inputs.unsigned_distance, *registry);
+    if (std::string e = add_shape_file(spec, inputs.unsigned_distance, *registry); !e.empty())
+    {
+      throw UserError("--shape " + e);
+    }
   }
   return registry;
 }

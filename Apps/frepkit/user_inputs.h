@@ -31,8 +31,4 @@ void add_user_input_options(CLI::App* command, UserInputs& inputs);
 /// naming the library (or shape file) and the function when one cannot be loaded.
 std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs);
 
-/// Adds the shape `spec` (name=FILE) to `registry`; throws UserError (shape_inputs.cpp).
-void add_shape_input(const std::string& spec, bool unsigned_distance,
-  frep::UserFunctionRegistry& registry);
-
 } // namespace frepkit

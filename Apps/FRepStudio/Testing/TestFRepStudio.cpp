@@ -157,6 +157,7 @@ private slots:
   void openCloseCycles();
   void exportAnimationWritesMovie();
   void exportAnimationCancels();
+  void shapeFilesAreCallable();
 };
 
 void TestFRepStudio::coordinateRangesFromFile()
@@ -703,6 +704,40 @@ void TestFRepStudio::exportAnimationCancels()
   const QStringList leftovers =
     QDir(out + "/frames").entryList({ "*.tmp*", "*partial*" }, QDir::Files | QDir::Hidden);
   QVERIFY2(leftovers.isEmpty(), qPrintable(leftovers.join(", ")));
+}
+
+void TestFRepStudio::shapeFilesAreCallable()
+{
+  const QString stl = QStringLiteral(FREPSTUDIO_EXAMPLES_DIR "/metamorphosis/pebble.stl");
+  const QString model = "m(x[3], a[1])\n{\n  m = pebble(x);\n}\n";
+  auto window = shownWindow();
+  QVERIFY(window);
+
+  // Without the shape the call is an error of the model, and nothing is drawn.
+  window->setModelText(model);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->errorList()->count() >= 1);
+  QCOMPARE(window->sectionView()->cellCount(), 0LL);
+
+  // A file that cannot be read: false, the shape and the file named, nothing changes.
+  QString error;
+  QVERIFY(!window->setUserInputs({ {}, { "pebble=/nonexistent/pebble.stl" }, false }, &error));
+  QCOMPARE(error, QStringLiteral("--shape pebble: /nonexistent/pebble.stl: cannot open the file"));
+  QVERIFY(!window->setUserInputs({ {}, { "pebble" }, false }, &error));
+  QVERIFY2(error.contains("expected name=FILE"), qPrintable(error));
+
+  // With the mesh the same text analyses again by itself and the pebble is drawn.
+  QVERIFY2(window->setUserInputs({ {}, { "pebble=" + stl }, false }, &error), qPrintable(error));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(window->errorList()->count(), 0);
+  QVERIFY(window->sectionView()->cellCount() > 0);
+
+  // The export gets absolute paths, the volume's iso suffix kept, and the unsigned flag.
+  const UserInputs relative{ { "libshapes.so" }, { "ct=scan.vti:0.5" }, true };
+  const QStringList arguments = userInputArguments(absoluteUserInputs(relative));
+  const QString cwd = QDir::currentPath();
+  QCOMPARE(arguments, (QStringList{ "--library", cwd + "/libshapes.so", "--shape",
+                        "ct=" + cwd + "/scan.vti:0.5", "--unsigned-distance" }));
 }
 
 int main(int argc, char* argv[])

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # FRepStudio --library: a model calling the example user library's ring() renders without
-# errors in a screenshot; a library that does not exist is exit code 1 naming it.
+# errors in a screenshot; a library that does not exist is exit code 1 naming it. --shape: a
+# model calling pebble(x), the example's STL, renders; a missing shape file is exit code 1.
 #   user_library_test.sh XVFB_RUN FREPSTUDIO LIBRARY SOURCE_DIR
 set -u
 xvfb=$1
@@ -31,5 +32,22 @@ if grep -q "model has errors" "$work/err"; then
   echo "PASS: without the library the model has errors"
 else
   echo "FAIL: without the library no error was noted: $(cat "$work/err")"; status=1
+fi
+printf 'm(x[3], a[1])\n{\n  m = pebble(x);\n}\n' >"$work/pebble_call.hf"
+"$xvfb" "$studio" --shape "pebble=$4/Examples/metamorphosis/pebble.stl" \
+  --screenshot "$work/pebble.png" --size 640x400 "$work/pebble_call.hf" >"$work/out" 2>"$work/err"
+code=$?
+if [ $code -ne 0 ] || [ ! -s "$work/pebble.png" ] || grep -q "model has errors" "$work/err"; then
+  echo "FAIL: screenshot with --shape: code $code, $(cat "$work/err")"; status=1
+else
+  echo "PASS: screenshot with --shape"
+fi
+"$xvfb" "$studio" --shape pebble=/nonexistent/pebble.stl --screenshot "$work/none.png" \
+  "$work/pebble_call.hf" >"$work/out" 2>"$work/err"
+code=$?
+if [ $code -ne 1 ] || ! grep -q "shape pebble: /nonexistent/pebble.stl: cannot open" "$work/err"; then
+  echo "FAIL: a missing shape file: code $code, $(cat "$work/err")"; status=1
+else
+  echo "PASS: a missing shape file is named, exit code 1"
 fi
 exit $status

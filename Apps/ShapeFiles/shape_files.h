@@ -1,0 +1,21 @@
+// A shape file as a function a model calls by name: the `name=FILE[:ISO]` of the applications'
+// --shape option. FILE is a closed triangle mesh (.stl, .obj, .ply, .vtp: signed distance, >= 0
+// inside; minus the unsigned distance when asked) or a volume (.vti: its scalars minus ISO).
+// Shared by frepkit and FRepStudio so that both read the same files with the same messages.
+#pragma once
+
+#include "Language/user_functions.h"
+
+#include <string>
+
+namespace frepkit
+{
+
+/// Registers the shape `spec` (name=FILE[:ISO]) in `registry` as the function name(x). Returns
+/// an empty string on success, otherwise the message, which starts with the name (or the spec
+/// when it has none): "bunny: bunny.stl: the mesh has 12 open edges ...". Callers prefix the
+/// option ("--shape ").
+std::string add_shape_file(
+  const std::string& spec, bool unsigned_distance, frep::UserFunctionRegistry& registry);
+
+} // namespace frepkit

@@ -55,9 +55,9 @@ bool vtkImplicitFunctionToFRep::MakeFunction(
       if (lock)
       {
         std::lock_guard<std::mutex> guard(*lock);
-        return -f->EvaluateFunction(x);
+        return -f->FunctionValue(x);
       }
-      return -f->EvaluateFunction(x);
+      return -f->FunctionValue(x);
     });
   return true;
 }

@@ -3,7 +3,8 @@
  * @brief   any vtkImplicitFunction as a 3-D vtkFRepObject (F = -f: FRep is >= 0 inside)
  *
  * VTK's implicit functions are negative inside, FRep's objects positive: F(p) =
- * -EvaluateFunction(p). No enclosure is known for an arbitrary function, so meshing samples
+ * -FunctionValue(p), with the function's Transform applied as VTK's own filters do (ParaView's
+ * Box is a vtkBox moved by its Transform). No enclosure is known for an arbitrary function, so meshing samples
  * every box (the whole line, never wrong); gradients by differences. Evaluation is serialised
  * by a lock (SerializeEvaluation, default on) because many vtkImplicitFunction subclasses are
  * not thread-safe (vtkImplicitPolyDataDistance's locator); turn it off for thread-safe ones

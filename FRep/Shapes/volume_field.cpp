@@ -126,7 +126,9 @@ double VolumeField::value_and_gradient(const std::array<double, 3>& p, std::arra
       }
     }
   }
-  const auto lerp = [](double x, double y, double s) { return x + (y - x) * s; };
+  // Exact at both ends: on the last grid plane (t = 1) x + (y - x) can differ from y by rounding,
+  // and F at every grid point is to be the sample minus the iso value.
+  const auto lerp = [](double x, double y, double s) { return s == 1 ? y : x + (y - x) * s; };
   const double x00 = lerp(c[0][0][0], c[1][0][0], t[0]);
   const double x10 = lerp(c[0][1][0], c[1][1][0], t[0]);
   const double x01 = lerp(c[0][0][1], c[1][0][1], t[0]);

@@ -2,7 +2,8 @@
 example user library's ring(x, R, r) (Examples/user-library) reads and meshes once the library is
 listed; a library that does not exist is an error naming it, with empty outputs and no crash.
 Mesh To FRep and Volume To FRep: a closed sphere and a sampled volume as FRep objects meshed by
-FRep Polygonizer; an open plane refused naming its open edges. pvpython, no rendering."""
+FRep Polygonizer; an open plane refused naming its open edges. Implicit Function To FRep: ParaView's
+Sphere implicit function (radius 2, moved) meshed, and its Box (moved and sized: its Transform). pvpython, no rendering."""
 
 import os
 import sys
@@ -63,6 +64,30 @@ messages.clear()
 vpoly.UpdatePipeline()
 t.check(messages.text().count("ERROR") == 0, "no error from Volume To FRep: %r" % messages.text())
 t.check(vpoly.GetDataInformation().GetNumberOfCells() > 100, "the wavelet's 200 surface meshed")
+
+# Implicit Function To FRep: ParaView's own implicit-function proxies as FRep objects.
+messages.clear()
+ball = ImplicitFunctionToFRep(ImplicitFunction="Sphere", FunctionName="ball",
+                              Bounds=[-4, 4, -4, 4, -4, 4])
+ball.ImplicitFunction.Center = [1.0, 0.0, 0.0]
+ball.ImplicitFunction.Radius = 2.0
+bpoly = FRepPolygonizer(Input=ball, SampleDimensions=[48, 48, 48])
+bpoly.UpdatePipeline()
+t.check(messages.text().count("ERROR") == 0, "no error from Implicit Function To FRep: %r"
+        % messages.text())
+b = bpoly.GetDataInformation().GetBounds()
+t.check(bpoly.GetDataInformation().GetNumberOfCells() > 100 and abs(b[0] + 1.0) < 0.1
+        and abs(b[1] - 3.0) < 0.1 and abs(b[3] - 2.0) < 0.1,
+        "the sphere of radius 2 at (1, 0, 0) meshed: %s" % (b,))
+box = ImplicitFunctionToFRep(ImplicitFunction="Box", Bounds=[-2, 2, -2, 2, -2, 2])
+box.ImplicitFunction.Position = [0.5, 0.25, 0.0]
+box.ImplicitFunction.Length = [1.0, 1.5, 0.5]
+xpoly = FRepPolygonizer(Input=box, SampleDimensions=[41, 41, 41])
+xpoly.UpdatePipeline()
+b = xpoly.GetDataInformation().GetBounds()
+want = [0.5, 1.5, 0.25, 1.75, 0.0, 0.5]
+t.check(xpoly.GetDataInformation().GetNumberOfCells() > 10 and all(abs(v - w) < 0.06
+        for v, w in zip(b, want)), "the box [0.5, 1.5] x [0.25, 1.75] x [0, 0.5] meshed: %s" % (b,))
 
 if t.report():
     sys.exit(1)

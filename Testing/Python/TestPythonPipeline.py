@@ -23,13 +23,8 @@ import tempfile
 
 import numpy
 
-failures = []
-
-
-def check(condition, what):
-    print(("ok    " if condition else "FAIL  ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from python_checks import check, finish  # noqa: E402
 
 
 source_dir, frepkit_exe = sys.argv[1], sys.argv[2]
@@ -213,7 +208,4 @@ frepkit.update(named)
 check(named.GetObjectName() == "box" and named.GetOutput().GetDimension() == 3,
       "ObjectName selects the object 'box' (3-D)")
 
-if failures:
-    print("%d check(s) failed" % len(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()

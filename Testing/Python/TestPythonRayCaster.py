@@ -19,13 +19,8 @@ import sys
 
 import numpy
 
-failures = []
-
-
-def check(condition, what):
-    print(("ok    " if condition else "FAIL  ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from python_checks import check, finish  # noqa: E402
 
 
 source_dir = sys.argv[1]
@@ -118,7 +113,4 @@ except frepkit.FRepError as e:
     check(any("vtkFRepSlice" in m for m in e.messages), "a 5-D object: %s" % e.messages)
 check(unsliced.GetOutput().GetNumberOfPoints() == 0, "... and an empty image")
 
-if failures:
-    print("%d check(s) failed" % len(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()

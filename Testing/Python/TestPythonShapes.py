@@ -13,17 +13,13 @@
   `max(ball(x), cube(x))` is the max of the two objects' F, bit for bit.
 Exits 1 on any failed check."""
 
+import os
 import sys
 
 import numpy
 
-failures = []
-
-
-def check(condition, what):
-    print(("ok    " if condition else "FAIL  ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from python_checks import check, finish  # noqa: E402
 
 
 import frepkit  # noqa: E402
@@ -148,7 +144,4 @@ check(numpy.array_equal(f_all, numpy.maximum(numpy.maximum(f_ball, f_mesh),
                                              frepkit.evaluate(blob, points))),
       "a HyperFun program calling ball(x), pebble(x), blob(x): F is their max, bit for bit")
 
-if failures:
-    print("%d checks failed" % len(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "SectionMeshConversion.h"
+#include "SectionSpec.h"
 
 #include "Compiler/model.h"
 
@@ -27,15 +28,9 @@ class ThreadPool;
 namespace frepstudio
 {
 
-struct SectionRequest
+struct SectionRequest : SectionSpec
 {
-  std::shared_ptr<const frep::Model> model;
-  int s_dim = 1;
-  std::vector<double> parameters;   ///< a[1..]
-  std::vector<double> fixed_values; ///< x4..xn (the coordinates beyond the first three)
-  std::array<double, 3> lo{ -10, -10, -10 }; ///< the box of x1..x3
-  std::array<double, 3> hi{ 10, 10, 10 };
-  std::vector<int> resolutions;     ///< samples per axis, in the order they are computed
+  std::vector<int> resolutions; ///< samples per axis, in the order they are computed
 };
 
 struct SectionMesh

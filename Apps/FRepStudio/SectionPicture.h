@@ -2,6 +2,7 @@
 // ray-cast cells and the 3-D view's "High quality" picture. No OpenGL: it runs on worker threads.
 #pragma once
 
+#include "SectionSpec.h"
 #include "Compiler/model.h"
 #include "Render/camera.h"
 #include "Render/image.h"
@@ -16,14 +17,8 @@
 namespace frepstudio
 {
 
-struct SectionPictureRequest
+struct SectionPictureRequest : SectionSpec
 {
-  std::shared_ptr<const frep::Model> model;
-  int s_dim = 1;
-  std::vector<double> parameters;   ///< a[1..]
-  std::vector<double> fixed_values; ///< x4..xn
-  std::array<double, 3> lo{ -10, -10, -10 }; ///< the box of x1..x3 (its cut faces are capped)
-  std::array<double, 3> hi{ 10, 10, 10 };
   frep::render::Camera camera;       ///< in x1..x3 (the section is drawn where it is)
   int width = 160;
   int height = 160;

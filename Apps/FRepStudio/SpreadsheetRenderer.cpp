@@ -51,12 +51,7 @@ constexpr std::array<float, 3> kCellBackground{ 0.24F, 0.26F, 0.31F }; // sRGB
 QImage raycast_cell(const CellRequest& request, const std::function<bool()>& keep_going)
 {
   SectionPictureRequest picture;
-  picture.model = request.model;
-  picture.s_dim = request.s_dim;
-  picture.parameters = request.parameters;
-  picture.fixed_values = request.fixed_values;
-  picture.lo = request.lo;
-  picture.hi = request.hi;
+  static_cast<SectionSpec&>(picture) = request;
   picture.camera = cell_camera(request);
   picture.width = picture.height = request.pixels;
   picture.background_bottom = picture.background_top = kCellBackground;

@@ -4,6 +4,7 @@
 // grid), so cells are made on a worker thread without touching OpenGL.
 #pragma once
 
+#include "SectionSpec.h"
 #include "Compiler/model.h"
 
 #include <QImage>
@@ -21,14 +22,8 @@ class ThreadPool;
 namespace frepstudio
 {
 
-struct CellRequest
+struct CellRequest : SectionSpec // fixed_values: x4..xn for this cell
 {
-  std::shared_ptr<const frep::Model> model;
-  int s_dim = 1;
-  std::vector<double> parameters;
-  std::vector<double> fixed_values; ///< x4..xn for this cell
-  std::array<double, 3> lo{ -10, -10, -10 };
-  std::array<double, 3> hi{ 10, 10, 10 };
   int resolution = 40; ///< samples per axis
   int pixels = 160;    ///< the picture is pixels x pixels
   bool raycast = false; ///< draw by rays instead of meshing at `resolution`

@@ -444,12 +444,7 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
   pictures_->cancel(); // the section changes: a picture of the old one would be stale
 
   SpreadsheetPanel::Sheet sheet;
-  sheet.base.model = request.model;
-  sheet.base.s_dim = request.s_dim;
-  sheet.base.parameters = request.parameters;
-  sheet.base.fixed_values = request.fixed_values;
-  sheet.base.lo = request.lo;
-  sheet.base.hi = request.hi;
+  static_cast<SectionSpec&>(sheet.base) = request;
   sheet.base.pixels = 120;
   for (int i = 3; i < object->x_dim; ++i)
     sheet.extra_ranges.push_back(analysis_->ranges.range(i));
@@ -504,12 +499,7 @@ void StudioMainWindow::requestPicture()
     !view_->section() || shown_generation_ != worker_->latestGeneration())
     return;
   SectionPictureRequest request;
-  request.model = last_request_->model;
-  request.s_dim = last_request_->s_dim;
-  request.parameters = last_request_->parameters;
-  request.fixed_values = last_request_->fixed_values;
-  request.lo = last_request_->lo;
-  request.hi = last_request_->hi;
+  static_cast<SectionSpec&>(request) = *last_request_;
   request.camera = view_->camera();
   const QSize size = view_->pixelSize();
   request.width = size.width();

@@ -2,7 +2,6 @@
 
 #include "AnimationExport.h"
 #include "DurableSave.h"
-#include "Language/user_library.h"
 #include "shape_files.h"
 
 #include "CoordinatePanel.h"
@@ -623,27 +622,21 @@ void StudioMainWindow::closeEvent(QCloseEvent* event)
 
 bool StudioMainWindow::setUserInputs(const UserInputs& inputs, QString* error)
 {
+  const auto strings = [](const QStringList& list)
+  {
+    std::vector<std::string> out;
+    for (const QString& item : list)
+      out.push_back(item.toStdString());
+    return out;
+  };
   auto registry = std::make_shared<frep::UserFunctionRegistry>();
-  for (const QString& path : inputs.libraries)
+  const std::string e = frepkit::add_user_inputs(
+    strings(inputs.libraries), strings(inputs.shapes), inputs.unsignedDistance, *registry);
+  if (!e.empty())
   {
-    const frep::UserLibraryResult r = frep::load_user_library(path.toStdString(), *registry);
-    if (!r.ok())
-    {
-      if (error)
-        *error = QString::fromStdString(r.error);
-      return false;
-    }
-  }
-  for (const QString& spec : inputs.shapes)
-  {
-    const std::string e =
-      frepkit::add_shape_file(spec.toStdString(), inputs.unsignedDistance, *registry);
-    if (!e.empty())
-    {
-      if (error)
-        *error = "--shape " + QString::fromStdString(e);
-      return false;
-    }
+    if (error)
+      *error = QString::fromStdString(e);
+    return false;
   }
   const bool none = inputs.libraries.isEmpty() && inputs.shapes.isEmpty();
   users_ = none ? nullptr : std::move(registry);

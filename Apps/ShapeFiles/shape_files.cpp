@@ -2,6 +2,7 @@
 // asked) or a volume (.vti, iso value after a colon: name=ct.vti:0.5) as the function name(x).
 #include "shape_files.h"
 
+#include "Language/user_library.h"
 #include "Shapes/mesh_readers.h"
 #include "Shapes/shape_functions.h"
 #include "vtk_shape_reader.h"
@@ -94,6 +95,27 @@ std::string add_shape_file(
   if (!added.empty())
   {
     return label + added;
+  }
+  return {};
+}
+
+std::string add_user_inputs(const std::vector<std::string>& libraries,
+  const std::vector<std::string>& shapes, bool unsigned_distance,
+  frep::UserFunctionRegistry& registry)
+{
+  for (const std::string& path : libraries)
+  {
+    if (const frep::UserLibraryResult r = frep::load_user_library(path, registry); !r.ok())
+    {
+      return r.error;
+    }
+  }
+  for (const std::string& spec : shapes)
+  {
+    if (std::string e = add_shape_file(spec, unsigned_distance, registry); !e.empty())
+    {
+      return "--shape " + e;
+    }
   }
   return {};
 }

@@ -7,6 +7,7 @@
 #include "Language/user_functions.h"
 
 #include <string>
+#include <vector>
 
 namespace frepkit
 {
@@ -17,5 +18,12 @@ namespace frepkit
 /// option ("--shape ").
 std::string add_shape_file(
   const std::string& spec, bool unsigned_distance, frep::UserFunctionRegistry& registry);
+
+/// Loads the user libraries (frepkit_user.h) and then the shape files into `registry`: the
+/// --library and --shape options of both programs. Empty on success, else the first failure's
+/// message (the library and the function, or "--shape " and what add_shape_file says).
+std::string add_user_inputs(const std::vector<std::string>& libraries,
+  const std::vector<std::string>& shapes, bool unsigned_distance,
+  frep::UserFunctionRegistry& registry);
 
 } // namespace frepkit

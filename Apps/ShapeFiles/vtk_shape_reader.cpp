@@ -13,6 +13,28 @@
 
 namespace frepkit
 {
+namespace
+{
+
+/// Runs a VTK XML reader on `path`; empty on success, else why the file is not of that `kind`.
+template <class Reader>
+std::string read_xml(const std::string& path, const char* kind, vtkNew<Reader>& reader)
+{
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+  {
+    return path + ": cannot open the file";
+  }
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return path + ": not a VTK XML " + kind + " file";
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return {};
+}
+
+} // namespace
 
 bool vtk_shapes_available()
 {
@@ -21,18 +43,11 @@ bool vtk_shapes_available()
 
 std::string read_vtp_mesh(const std::string& path, frep::shapes::TriangleMesh& mesh)
 {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-  {
-    return path + ": cannot open the file";
-  }
   vtkNew<vtkXMLPolyDataReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
+  if (std::string e = read_xml(path, "PolyData", reader); !e.empty())
   {
-    return path + ": not a VTK XML PolyData file";
+    return e;
   }
-  reader->SetFileName(path.c_str());
-  reader->Update();
   vtkPolyData* poly = reader->GetOutput();
   if (reader->GetErrorCode() != 0 || poly == nullptr || poly->GetNumberOfPoints() == 0)
   {
@@ -65,18 +80,11 @@ std::string read_vtp_mesh(const std::string& path, frep::shapes::TriangleMesh& m
 
 std::string read_vti_volume(const std::string& path, frep::shapes::VolumeGrid& grid)
 {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-  {
-    return path + ": cannot open the file";
-  }
   vtkNew<vtkXMLImageDataReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
+  if (std::string e = read_xml(path, "ImageData", reader); !e.empty())
   {
-    return path + ": not a VTK XML ImageData file";
+    return e;
   }
-  reader->SetFileName(path.c_str());
-  reader->Update();
   vtkImageData* image = reader->GetOutput();
   if (reader->GetErrorCode() != 0 || image == nullptr)
   {

@@ -1,6 +1,5 @@
 #include "user_inputs.h"
 
-#include "Language/user_library.h"
 #include "shape_files.h"
 #include "user_error.h"
 
@@ -31,20 +30,11 @@ std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInp
     return nullptr;
   }
   auto registry = std::make_shared<frep::UserFunctionRegistry>();
-  for (const std::string& path : inputs.libraries)
+  if (std::string e = add_user_inputs(inputs.libraries, inputs.shapes, inputs.unsigned_distance,
+        *registry);
+      !e.empty())
   {
-    const frep::UserLibraryResult r = frep::load_user_library(path, *registry);
-    if (!r.ok())
-    {
-      throw UserError(r.error);
-    }
-  }
-  for (const std::string& spec : inputs.shapes)
-  {
-    if (std::string e = add_shape_file(spec, inputs.unsigned_distance, *registry); !e.empty())
-    {
-      throw UserError("--shape " + e);
-    }
+    throw UserError(e);
   }
   return registry;
 }

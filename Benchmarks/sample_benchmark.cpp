@@ -1,10 +1,10 @@
-// The grid sampler on one model, with and without per-tile tape simplification: where the time of
-// a sampled image or volume goes (parse + compile, specialise, sampling) and the instructions per
-// sample. The model is any file frepkit reads (.hf or .vm: e.g. the Prospero Challenge's
+// The grid sampler on one model, with and without per-tile tape simplification, and sign only (the
+// sides of F = 0, as a sign image needs them): where the time of a sampled image or volume goes
+// (parse + compile, specialise, sampling) and the instructions per sample. The model is any file frepkit reads (.hf or .vm: e.g. the Prospero Challenge's
 // prospero.vm, which this program does not ship).
 //
 // Usage: frep_sample_benchmark MODEL [--box x0,y0[,z0],x1,y1[,z1]] [--grid N] [--repeat 5]
-//                              [--threads 0] [--only simplified|full]
+//                              [--threads 0] [--only simplified|full|sign]
 // Prints one Markdown row per mode: median wall milliseconds of sample_grid over the repeats.
 #include "Compiler/model.h"
 #include "Language/parser.h"
@@ -132,11 +132,11 @@ int main(int argc, char** argv)
   }
   std::printf("%s: %zu instructions, %zu inputs; parse + compile %.1f ms, specialise %.1f ms\n\n",
     path.c_str(), tape->code.size(), d, parse_ms, specialise_ms);
-  std::printf("| mode | grid | sample_grid (ms, median of %d) | instructions per sample | inside |\n"
-              "|---|---|---:|---:|---:|\n", repeat);
-  for (const bool simplify : { true, false })
+  std::printf("| mode | grid | sample_grid (ms, median of %d) | instructions per sample | "
+              "decided by tiles | inside |\n|---|---|---:|---:|---:|---:|\n", repeat);
+  for (const std::string mode : { "simplified", "full", "sign" })
   {
-    if ((only == "simplified" && !simplify) || (only == "full" && simplify))
+    if (!only.empty() && only != mode)
     {
       continue;
     }
@@ -147,7 +147,8 @@ int main(int argc, char** argv)
     {
       frep::SampleOptions options;
       options.threads = threads;
-      options.simplify = simplify;
+      options.simplify = mode != "full";
+      options.sign_only = mode == "sign";
       inside = 0;
       start = Clock::now();
       last = frep::sample_grid(tape, grid, options,
@@ -165,9 +166,13 @@ int main(int argc, char** argv)
         return 1;
       }
     }
-    std::printf("| %s | %lld^%zu | %.1f | %.1f | %zu |\n", simplify ? "simplified per tile" : "full tape",
+    const char* name = mode == "full" ? "full tape"
+      : mode == "sign"                 ? "sign only, simplified per tile"
+                                       : "simplified per tile";
+    std::printf("| %s | %lld^%zu | %.1f | %.1f | %.1f%% | %zu |\n", name,
       static_cast<long long>(n), d, median(times),
-      double(last.instructions) / double(last.samples), inside);
+      double(last.instructions) / double(last.samples),
+      100.0 * double(last.decided) / double(last.samples), inside);
   }
   return 0;
 }

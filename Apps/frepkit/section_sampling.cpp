@@ -16,7 +16,9 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
   int axes,
   bool attributes,
   int threads,
-  bool show_progress)
+  bool show_progress,
+  bool sign_only,
+  double iso)
 {
   frep::GridSpec spec;
   SampledSection section;
@@ -34,6 +36,8 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
   options.failures = frep::FailurePolicy::NaN;
   options.max_samples = kMaxSectionSamples;
   options.threads = threads;
+  options.sign_only = sign_only && !attributes;
+  options.iso = iso;
   // Refused before the section's arrays are allocated.
   if (const std::string problem = frep::check_grid(spec, tape->input_count, options);
       !problem.empty())

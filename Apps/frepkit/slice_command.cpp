@@ -237,12 +237,17 @@ int run_slice(const SliceOptions& options)
   }
   else
   {
+    // A picture without colours shows each sample's side of iso only: tiles proved wholly on
+    // one side are not evaluated (the picture is the same bit for bit; .vti files get F).
+    const bool want_attributes = (kind == SliceKind::Image && attributes) || colours;
     SampledSection section = sample_section(tape,
       grid,
       axes,
-      (kind == SliceKind::Image && attributes) || colours,
+      want_attributes,
       options.threads,
-      !options.quiet);
+      !options.quiet,
+      kind == SliceKind::Png && !want_attributes,
+      options.iso);
     for (int k = 0; k < axes; ++k)
     {
       section.axis_names[static_cast<std::size_t>(k)] =

@@ -658,6 +658,25 @@ IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
   may_nan_.assign(tape_->slot_count, 1);
 }
 
+void IntervalEvaluator::rebind(std::shared_ptr<const Tape> tape, bool trusted)
+{
+  if (!tape)
+  {
+    throw std::invalid_argument("IntervalEvaluator: null tape");
+  }
+  if (tape == tape_)
+  {
+    return;
+  }
+  if (!trusted)
+  {
+    eval::check_tape(*tape, "IntervalEvaluator");
+  }
+  slots_.assign(tape->slot_count, Interval::everything());
+  may_nan_.assign(tape->slot_count, 1);
+  tape_ = std::move(tape);
+}
+
 IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
 {
   return run(box, nullptr);

@@ -39,6 +39,11 @@ public:
 
   const Tape& tape() const { return *tape_; }
 
+  /// Evaluates `tape` from now on, keeping the buffers (for walks that evaluate many boxes, each
+  /// with its own simplified tape). A `trusted` tape (one TapeSimplifier made) is not checked
+  /// again. Rebinding the same tape costs nothing.
+  void rebind(std::shared_ptr<const Tape> tape, bool trusted = false);
+
 private:
   IntervalResult run(std::span<const Interval> box, Choice* choices);
 

@@ -1,8 +1,9 @@
-// Three passes over the tape: (1) forward, resolve the choices into values (SSA: every surviving
-// instruction defines a new value, a decided instruction only renames one); (2) backward, keep
-// what an output, an ErrorIf or a Call needs; (3) forward, give the survivors registers again,
-// reusing a register once its value's last reader has run (never for that reader's own result:
-// the batch kernel relies on an instruction not writing a slot it reads, as the emitter does).
+// One pass over the whole tape and two over what survives: (1) backward over the tape, keep what
+// an output, an ErrorIf or a Call needs, as values (SSA), a decided instruction only renaming one
+// (merging two names of one value); (2) forward over the survivors, resolve the merged names and
+// find each value's last reader; (3) forward, give the survivors registers, reusing a register
+// once its value's last reader has run. The one pass over the long tape is what a box pays (the
+// earlier three passes over it were a third of Prospero's sampling time).
 #include "Eval/tape_simplifier.h"
 
 
@@ -59,6 +60,32 @@ bool worth_switching(const Tape& simplified, const Tape& from)
   return n + 4 <= m && n * 8 <= m * 7;
 }
 
+std::uint32_t TapeSimplifier::find(std::uint32_t v)
+{
+  while (merged_[v] != v)
+  {
+    merged_[v] = merged_[merged_[v]]; // path halving
+    v = merged_[v];
+  }
+  return v;
+}
+
+std::uint32_t TapeSimplifier::fresh_value()
+{
+  const auto v = static_cast<std::uint32_t>(merged_.size());
+  merged_.push_back(v);
+  return v;
+}
+
+std::uint32_t TapeSimplifier::demand(std::uint32_t slot)
+{
+  if (wanted_[slot] == kNone)
+  {
+    wanted_[slot] = fresh_value();
+  }
+  return wanted_[slot];
+}
+
 std::shared_ptr<const Tape> TapeSimplifier::simplify(
   const Tape& tape, std::span<const Choice> choices)
 {
@@ -71,201 +98,173 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
     return nullptr;
   }
 
-  // (1) Resolve choices.
-  value_of_.assign(tape.slot_count, kNone);
-  // About one value per instruction (written by index: push_back was a tenth of the time).
-  ssa_.resize(tape.code.size() + 3);
-  std::size_t ssa_count = 0;
-  const auto emit = [&](const Instruction& ins)
-  {
-    if (ssa_count == ssa_.size())
-    {
-      ssa_.resize(2 * ssa_.size()); // constants for many slots read before any write
-    }
-    ssa_[ssa_count++] = ins;
-  };
+  // (1) Backward over the tape. wanted_[slot]: the value (SSA) that the instructions kept after
+  // this point read from `slot`, or kNone. A kept instruction defines the value wanted from its
+  // out slot and then wants its operands; a decided one renames (its value is the chosen
+  // operand's: the two values are merged) or becomes a constant; one whose value nobody wants
+  // is dropped. ErrorIf (unless decided) and Call are always kept: they can set the error.
+  wanted_.assign(tape.slot_count, kNone);
+  merged_.clear();
+  ssa_.clear();
   site_inputs_.clear();
   site_outputs_.clear();
-  std::uint32_t values = 0;
-  std::uint32_t true_value = kNone;
-  std::uint32_t false_value = kNone;
-  const auto define_const = [&](double v)
+  output_values_.clear();
+  for (std::uint32_t slot : tape.outputs)
   {
-    Instruction c;
-    c.op = Opcode::Const;
-    c.imm = v;
-    c.out = values++;
-    emit(c);
-    return c.out;
-  };
-  // A slot read before any write holds the register file's initial 0 (no producer emits that).
-  const auto read = [&](std::uint32_t slot)
-  {
-    if (value_of_[slot] == kNone)
-    {
-      value_of_[slot] = define_const(0.0);
-    }
-    return value_of_[slot];
-  };
-  for (std::size_t i = 0; i < tape.code.size(); ++i)
+    output_values_.push_back(demand(slot));
+  }
+  for (std::size_t i = tape.code.size(); i-- > 0;)
   {
     const Instruction& ins = tape.code[i];
-    switch (choices[i])
+    const Choice choice = choices[i];
+    if (ins.op == Opcode::ErrorIf)
     {
-      case Choice::TakeA:
-        value_of_[ins.out] = read(ins.a);
-        continue;
-      case Choice::TakeB:
-        value_of_[ins.out] = read(ins.b);
-        continue;
-      case Choice::TakeC:
-        value_of_[ins.out] = read(ins.c);
-        continue;
-      case Choice::True:
-        value_of_[ins.out] = true_value != kNone ? true_value : (true_value = define_const(1.0));
-        continue;
-      case Choice::False:
-        value_of_[ins.out] = false_value != kNone ? false_value : (false_value = define_const(0.0));
-        continue;
-      case Choice::Drop:
-        continue;
-      case Choice::Keep:
-        break;
+      if (choice != Choice::Drop)
+      {
+        Instruction n = ins;
+        n.a = demand(ins.a);
+        ssa_.push_back(n);
+      }
+      continue;
     }
-    Instruction n = ins;
-    n.a = n.b = n.c = 0;
     if (ins.op == Opcode::Call)
     {
       const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
-      std::vector<std::uint32_t> in, out;
-      in.reserve(site.inputs.size());
+      std::vector<std::uint32_t> out;
       out.reserve(site.outputs.size());
-      for (std::uint32_t s : site.inputs)
+      for (std::uint32_t s : site.outputs)
       {
-        in.push_back(read(s));
+        out.push_back(wanted_[s] != kNone ? wanted_[s] : fresh_value()); // (written, unread)
       }
       for (std::uint32_t s : site.outputs)
       {
-        out.push_back(values);
-        value_of_[s] = values++;
+        wanted_[s] = kNone;
       }
+      std::vector<std::uint32_t> in;
+      in.reserve(site.inputs.size());
+      for (std::uint32_t s : site.inputs)
+      {
+        in.push_back(demand(s));
+      }
+      Instruction n = ins;
       n.index = static_cast<std::int32_t>(site_inputs_.size());
       n.c = static_cast<std::uint32_t>(i); // the original site, until pass (3)
       site_inputs_.push_back(std::move(in));
       site_outputs_.push_back(std::move(out));
-      emit(n);
+      ssa_.push_back(n);
       continue;
     }
-    if (operands(ins.op) >= 1)
+    const std::uint32_t v = wanted_[ins.out];
+    if (v == kNone)
     {
-      n.a = read(ins.a);
+      continue; // nothing kept reads this result
     }
-    if (operands(ins.op) >= 2)
+    wanted_[ins.out] = kNone;
+    if (choice == Choice::TakeA || choice == Choice::TakeB || choice == Choice::TakeC)
     {
-      n.b = read(ins.b);
-    }
-    if (operands(ins.op) >= 3)
-    {
-      n.c = read(ins.c);
-    }
-    if (writes_out(ins.op))
-    {
-      n.out = values++;
-      value_of_[ins.out] = n.out;
-    }
-    emit(n);
-  }
-  std::vector<std::uint32_t>& output_values = output_values_;
-  output_values.clear();
-  for (std::uint32_t s : tape.outputs)
-  {
-    output_values.push_back(read(s));
-  }
-
-  // (2) Keep what is needed: outputs, and every ErrorIf and Call (they can set the error).
-  live_.assign(values, 0);
-  for (std::uint32_t v : output_values)
-  {
-    live_[v] = 1;
-  }
-  ssa_.resize(ssa_count);
-  keep_.assign(ssa_.size(), 0);
-  std::vector<unsigned char>& keep = keep_;
-  for (std::size_t j = ssa_.size(); j-- > 0;)
-  {
-    const Instruction& n = ssa_[j];
-    const bool needed =
-      n.op == Opcode::ErrorIf || n.op == Opcode::Call || (writes_out(n.op) && live_[n.out]);
-    if (!needed)
-    {
-      continue;
-    }
-    keep[j] = 1;
-    if (n.op == Opcode::Call)
-    {
-      for (std::uint32_t v : site_inputs_[static_cast<std::size_t>(n.index)])
+      const std::uint32_t from = choice == Choice::TakeA ? ins.a
+                               : choice == Choice::TakeB ? ins.b
+                                                         : ins.c;
+      if (wanted_[from] == kNone)
       {
-        live_[v] = 1;
-      }
-      continue;
-    }
-    if (operands(n.op) >= 1)
-    {
-      live_[n.a] = 1;
-    }
-    if (operands(n.op) >= 2)
-    {
-      live_[n.b] = 1;
-    }
-    if (operands(n.op) >= 3)
-    {
-      live_[n.c] = 1;
-    }
-  }
-
-  // (3) Registers.
-  last_use_.assign(values, kNone);
-  {
-    std::uint32_t j = 0;
-    for (std::size_t k = 0; k < ssa_.size(); ++k)
-    {
-      if (!keep[k])
-      {
-        continue;
-      }
-      const Instruction& n = ssa_[k];
-      if (n.op == Opcode::Call)
-      {
-        for (std::uint32_t v : site_inputs_[static_cast<std::size_t>(n.index)])
-        {
-          last_use_[v] = j;
-        }
+        wanted_[from] = v;
       }
       else
       {
-        if (operands(n.op) >= 1)
-        {
-          last_use_[n.a] = j;
-        }
-        if (operands(n.op) >= 2)
-        {
-          last_use_[n.b] = j;
-        }
-        if (operands(n.op) >= 3)
-        {
-          last_use_[n.c] = j;
-        }
+        merged_[find(v)] = find(wanted_[from]); // one value read under two names
       }
-      ++j;
+      continue;
+    }
+    Instruction n = ins;
+    n.out = v;
+    n.a = n.b = n.c = 0;
+    if (choice == Choice::True || choice == Choice::False)
+    {
+      n.op = Opcode::Const;
+      n.imm = choice == Choice::True ? 1.0 : 0.0;
+      ssa_.push_back(n);
+      continue;
+    }
+    const int reads = operands(ins.op);
+    if (reads >= 1)
+    {
+      n.a = demand(ins.a);
+    }
+    if (reads >= 2)
+    {
+      n.b = demand(ins.b);
+    }
+    if (reads >= 3)
+    {
+      n.c = demand(ins.c);
+    }
+    ssa_.push_back(n);
+  }
+  // A slot read before any write holds the register file's initial 0 (no producer emits that).
+  for (std::uint32_t slot = 0; slot < tape.slot_count; ++slot)
+  {
+    if (wanted_[slot] != kNone)
+    {
+      Instruction zero;
+      zero.op = Opcode::Const;
+      zero.imm = 0.0;
+      zero.out = wanted_[slot];
+      ssa_.push_back(zero);
     }
   }
-  for (std::uint32_t v : output_values)
+  std::reverse(ssa_.begin(), ssa_.end());
+
+  // (2) Forward over the survivors: the merged names resolved, and each value's last reader.
+  const auto values = static_cast<std::uint32_t>(merged_.size());
+  last_use_.assign(values, kNone);
+  for (std::uint32_t j = 0; j < ssa_.size(); ++j)
   {
+    Instruction& n = ssa_[j];
+    if (n.op == Opcode::Call)
+    {
+      for (std::uint32_t& v : site_inputs_[static_cast<std::size_t>(n.index)])
+      {
+        v = find(v);
+        last_use_[v] = j;
+      }
+      for (std::uint32_t& v : site_outputs_[static_cast<std::size_t>(n.index)])
+      {
+        v = find(v);
+      }
+      continue;
+    }
+    const int reads = operands(n.op);
+    if (reads >= 1)
+    {
+      n.a = find(n.a);
+      last_use_[n.a] = j;
+    }
+    if (reads >= 2)
+    {
+      n.b = find(n.b);
+      last_use_[n.b] = j;
+    }
+    if (reads >= 3)
+    {
+      n.c = find(n.c);
+      last_use_[n.c] = j;
+    }
+    if (writes_out(n.op))
+    {
+      n.out = find(n.out);
+    }
+  }
+  for (std::uint32_t& v : output_values_)
+  {
+    v = find(v);
     last_use_[v] = kForever;
   }
 
+  // (3) Registers: a value's register is free again once its last reader has run (never for
+  // that reader's own result: the batch kernel relies on an instruction not writing a slot it
+  // reads, as the emitter does).
   auto result = std::make_shared<Tape>();
-  result->code.reserve(static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1)));
+  result->code.reserve(ssa_.size());
   result->input_count = tape.input_count;
   result->errors = tape.errors;
   slot_of_.assign(values, kNone);
@@ -289,14 +288,9 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       last_use_[v] = kNone; // released once, even when read twice (a op a)
     }
   };
-  std::uint32_t j = 0;
-  for (std::size_t k = 0; k < ssa_.size(); ++k)
+  for (std::uint32_t j = 0; j < ssa_.size(); ++j)
   {
-    if (!keep[k])
-    {
-      continue;
-    }
-    Instruction n = ssa_[k];
+    Instruction n = ssa_[j];
     if (n.op == Opcode::Call)
     {
       const std::size_t site_index = static_cast<std::size_t>(n.index);
@@ -327,39 +321,37 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
       n.c = 0;
       result->calls.push_back(std::move(site));
       result->code.push_back(n);
-      ++j;
       continue;
     }
     const std::uint32_t a = n.a, b = n.b, c = n.c;
-    const bool ra = operands(n.op) >= 1, rb = operands(n.op) >= 2, rc = operands(n.op) >= 3;
-    n.a = ra ? slot_of_[a] : 0;
-    n.b = rb ? slot_of_[b] : 0;
-    n.c = rc ? slot_of_[c] : 0;
+    const int reads = operands(n.op);
+    n.a = reads >= 1 ? slot_of_[a] : 0;
+    n.b = reads >= 2 ? slot_of_[b] : 0;
+    n.c = reads >= 3 ? slot_of_[c] : 0;
     if (writes_out(n.op))
     {
       const std::uint32_t v = n.out;
       n.out = slot_of_[v] = take();
       if (last_use_[v] == kNone)
       {
-        free_slots_.push_back(n.out); // (only an unread Const can get here)
+        free_slots_.push_back(n.out); // (an unread value: only a constant can get here)
       }
     }
-    if (ra)
+    if (reads >= 1)
     {
       release_if_last(a, j);
     }
-    if (rb)
+    if (reads >= 2)
     {
       release_if_last(b, j);
     }
-    if (rc)
+    if (reads >= 3)
     {
       release_if_last(c, j);
     }
     result->code.push_back(n);
-    ++j;
   }
-  for (std::uint32_t v : output_values)
+  for (std::uint32_t v : output_values_)
   {
     result->outputs.push_back(slot_of_[v]);
   }

@@ -53,21 +53,26 @@ class TapeSimplifier
 public:
   /// The tape specialised by `choices` (one per instruction of `tape`, as recorded by
   /// IntervalEvaluator::evaluate(box, choices)), or null when no choice simplifies anything (the
-  /// caller keeps `tape`). Throws std::invalid_argument if choices.size() != tape.code.size().
+  /// caller keeps `tape`). The result is valid by construction (eval::check_tape need not run on
+  /// it) and writes every slot before reading it (a 0 the full tape read from an unwritten slot
+  /// becomes a Const). Throws std::invalid_argument if choices.size() != tape.code.size().
   std::shared_ptr<const Tape> simplify(const Tape& tape, std::span<const Choice> choices);
 
   /// Instructions of the last result (for statistics).
   std::size_t last_length() const { return last_length_; }
 
 private:
-  std::vector<std::uint32_t> value_of_; // original slot -> value (SSA) currently in it
+  std::uint32_t find(std::uint32_t value);  // the representative of merged names
+  std::uint32_t fresh_value();
+  std::uint32_t demand(std::uint32_t slot); // the value wanted from slot (new if none yet)
+
+  std::vector<std::uint32_t> wanted_;   // per original slot: value read from it later, or none
+  std::vector<std::uint32_t> merged_;   // per value: union-find parent (renamed values)
   std::vector<Instruction> ssa_;        // surviving instructions, operands as values
   std::vector<std::vector<std::uint32_t>> site_inputs_, site_outputs_; // calls, as values
-  std::vector<unsigned char> live_;      // per value
-  std::vector<unsigned char> keep_;      // per instruction of ssa_
   std::vector<std::uint32_t> output_values_;
-  std::vector<std::uint32_t> last_use_;  // per value: index into ssa_ of its last reader
-  std::vector<std::uint32_t> slot_of_;   // per value: its register in the result
+  std::vector<std::uint32_t> last_use_; // per value: index into ssa_ of its last reader
+  std::vector<std::uint32_t> slot_of_;  // per value: its register in the result
   std::vector<std::uint32_t> free_slots_;
   std::size_t last_length_ = 0;
 };

@@ -165,6 +165,10 @@ std::string check_grid(const GridSpec& grid, std::uint32_t inputs, const SampleO
   {
     return "attribute_count must be -1 (all), 0 (none) or a number of s[] values";
   }
+  if (options.sign_only && (options.attribute_count != 0 || options.gradients))
+  {
+    return "sign_only sampling gives F's side of iso only: no attributes or gradients";
+  }
   return {};
 }
 
@@ -199,9 +203,12 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     result.threads = batch.threads();
     // Tile by tile with tapes simplified per tile, when the tape has anything a box can decide.
     std::unique_ptr<sample::TiledEvaluator> tiled;
-    if (options.simplify && may_simplify(*tape))
+    if (options.sign_only || (options.simplify && may_simplify(*tape)))
     {
-      tiled = std::make_unique<sample::TiledEvaluator>(tape, pool);
+      sample::TileOptions tiles;
+      tiles.sign_only = options.sign_only;
+      tiles.iso = options.iso;
+      tiled = std::make_unique<sample::TiledEvaluator>(tape, pool, tiles);
     }
     std::vector<sample::SampleRun> runs;
 
@@ -357,6 +364,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     if (tiled)
     {
       result.instructions += tiled->instructions();
+      result.decided = tiled->decided();
     }
   }
   catch (const std::bad_alloc&)

@@ -72,6 +72,14 @@ struct SampleOptions
   /// min/max, selects and checks the box decides). The values are the same bit for bit; off is
   /// for tests and measurements.
   bool simplify = true;
+  /// Only the side of `iso` matters (sign images, inside/outside counts): a tile whose interval
+  /// enclosure lies wholly at or above iso, or wholly below it, with no run-time error or NaN
+  /// possible, is not evaluated, and its samples get that bound of F (the enclosure's lo >= iso,
+  /// or its hi < iso) instead of F. Every sample's side of iso, its failure and its error are
+  /// those of F bit for bit; values of evaluated samples are F. Excludes attributes and
+  /// gradients (check_grid says so). Implies the tiled evaluation.
+  bool sign_only = false;
+  double iso = 0.0;
   /// Grids (the whole grid, not the part) with more samples are refused before anything is
   /// allocated or evaluated.
   double max_samples = max_grid_samples;
@@ -112,6 +120,7 @@ struct SampleResult
   std::vector<double> first_failed_at;  ///< its position
   int threads = 0;                      ///< threads that evaluated
   std::size_t instructions = 0;         ///< tape instructions run (simplified tapes are shorter)
+  std::size_t decided = 0;              ///< samples whose side a tile decided (sign_only)
   bool ok() const { return error.empty() && !cancelled; }
 };
 

@@ -1,5 +1,6 @@
 #include "Sample/tiled_evaluation.h"
 
+#include "Eval/block_runner.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
@@ -33,6 +34,27 @@ std::vector<Interval> empty_box(std::size_t dimension)
   return std::vector<Interval>(dimension, Interval{ kInf, -kInf });
 }
 
+/// Whether a box's enclosure decides the side of iso of every sample in it (no failure and no
+/// NaN possible: a possible NaN makes the enclosure the whole line), and the bound to give them.
+bool decides_side(const IntervalResult& r, double iso, double& bound)
+{
+  if (r.may_fail)
+  {
+    return false;
+  }
+  if (r.value.lo >= iso)
+  {
+    bound = r.value.lo;
+    return true;
+  }
+  if (r.value.hi < iso)
+  {
+    bound = r.value.hi;
+    return true;
+  }
+  return false;
+}
+
 /// `simplified` if it is worth evaluating instead of `from`, else `from`.
 std::shared_ptr<const Tape> better(std::shared_ptr<const Tape> simplified,
   const std::shared_ptr<const Tape>& from)
@@ -43,13 +65,16 @@ std::shared_ptr<const Tape> better(std::shared_ptr<const Tape> simplified,
 } // namespace
 
 /// What one pool participant keeps between tasks: its simplifier, the block tape's interval
-/// evaluator (remade when the block's tape changes) and the gathered samples of a tile.
+/// evaluator (remade when the block's tape changes), one interval evaluator per depth of the
+/// walk and one batch runner, rebound to each box's tape (no evaluator is made per box), and the
+/// gathered samples of a tile.
 struct TiledEvaluator::Worker
 {
-  std::shared_ptr<ThreadPool> caller_only = std::make_shared<ThreadPool>(1);
   TapeSimplifier simplifier;
   std::shared_ptr<const Tape> block_tape;
   std::unique_ptr<IntervalEvaluator> block_interval;
+  std::vector<std::unique_ptr<IntervalEvaluator>> intervals; // per depth of the walk
+  eval::BlockRunner runner;
   std::vector<std::vector<Choice>> choices; // per depth of the recursion
   std::vector<std::vector<double>> in;
   std::vector<const double*> in_rows;
@@ -60,12 +85,25 @@ struct TiledEvaluator::Worker
   std::vector<std::size_t> index;
   std::size_t failures = 0;
   std::size_t instructions = 0;
+  std::size_t decided = 0;
 
-  BatchOptions options() const
+  /// The interval evaluator of depth `depth`, bound to `tape`.
+  IntervalEvaluator& interval_at(std::size_t depth, const std::shared_ptr<const Tape>& tape,
+    bool trusted)
   {
-    BatchOptions o;
-    o.pool = caller_only;
-    return o;
+    if (intervals.size() <= depth)
+    {
+      intervals.resize(depth + 1);
+    }
+    if (!intervals[depth])
+    {
+      intervals[depth] = std::make_unique<IntervalEvaluator>(tape);
+    }
+    else
+    {
+      intervals[depth]->rebind(tape, trusted);
+    }
+    return *intervals[depth];
   }
 
   void use_block_tape(const std::shared_ptr<const Tape>& tape)
@@ -181,10 +219,12 @@ struct TiledEvaluator::Task
 };
 
 TiledEvaluator::TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool,
-  int tile)
+  const TileOptions& options)
   : tape_(std::move(tape))
   , pool_(std::move(pool))
-  , tile_(std::max(1, tile))
+  , tile_(std::max(1, options.tile))
+  , sign_only_(options.sign_only)
+  , iso_(options.iso)
   , block_interval_(tape_)
   , block_choices_(tape_->code.size())
   , top_(std::make_unique<Worker>())
@@ -212,11 +252,27 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     throw std::invalid_argument("TiledEvaluator::evaluate: fewer input arrays than tape inputs");
   }
   const std::span<const double* const> coordinates = inputs.first(dimension);
+  if (sign_only_ && std::any_of(attributes.begin(), attributes.end(),
+                      [](const double* a) { return a != nullptr; }))
+  {
+    throw std::invalid_argument("TiledEvaluator: sign_only gives no attributes");
+  }
 
   // The block: one simplification of the whole tape.
   std::vector<Interval> box = empty_box(dimension);
   grow(box, coordinates, 0, count);
-  block_interval_.evaluate(box, block_choices_);
+  const IntervalResult enclosure = block_interval_.evaluate(box, block_choices_);
+  double bound = 0.0;
+  if (sign_only_ && decides_side(enclosure, iso_, bound))
+  {
+    std::fill_n(values, count, bound);
+    if (errors)
+    {
+      std::fill_n(errors, count, 0u);
+    }
+    decided_ += count;
+    return 0;
+  }
   const std::shared_ptr<const Tape> block_tape =
     better(block_simplifier_.simplify(*tape_, block_choices_), tape_);
 
@@ -236,6 +292,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     {
       w->failures = 0;
       w->instructions = 0;
+      w->decided = 0;
     }
   }
   const std::size_t leaf_samples = tile * tile;
@@ -253,6 +310,30 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     Worker& w;
     std::vector<Task>* tasks; // set in the serial phase: collect rectangles of <= task_samples
     std::size_t task_samples;
+    bool sign_only;
+    double iso;
+    const Tape* original; // the evaluator's own tape (checked); the others are simplified ones
+
+    /// With sign_only, fills the rectangle with the bound when the box's enclosure decides it.
+    bool decided(const Rectangle& r, const IntervalResult& enclosure)
+    {
+      double bound = 0.0;
+      if (!sign_only || !decides_side(enclosure, iso, bound))
+      {
+        return false;
+      }
+      for_each_segment(runs, r,
+        [&](std::size_t first, std::size_t n)
+        {
+          std::fill_n(values + first, n, bound);
+          if (errors)
+          {
+            std::fill_n(errors + first, n, 0u);
+          }
+          w.decided += n;
+        });
+      return true;
+    }
 
     /// The rectangle's box from the ends of its segments (positions rise along axis 0 and are
     /// constant along a run in the others: SampleRun's contract), and its sample count.
@@ -300,10 +381,13 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         b[k] = { *lo, *hi };
       }
       std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-      iv.evaluate(b, choices);
+      if (decided(r, iv.evaluate(b, choices)))
+      {
+        return;
+      }
       const std::shared_ptr<const Tape> leaf_tape = better(w.simplifier.simplify(*tape, choices), tape);
-      BatchEvaluator batch(leaf_tape, w.options());
-      w.failures += batch.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
+      w.runner.bind(leaf_tape, leaf_tape.get() != original);
+      w.failures += w.runner.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
         std::span<double* const>(w.attribute_rows));
       w.instructions += n * leaf_tape->code.size();
       for (std::size_t i = 0; i < n; ++i)
@@ -339,15 +423,13 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         return;
       }
       std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-      iv.evaluate(b, choices);
-      std::shared_ptr<const Tape> below = better(w.simplifier.simplify(*tape, choices), tape);
-      std::unique_ptr<IntervalEvaluator> own;
-      IntervalEvaluator* below_iv = &iv;
-      if (below != tape)
+      if (decided(r, iv.evaluate(b, choices)))
       {
-        own = std::make_unique<IntervalEvaluator>(below);
-        below_iv = own.get();
+        return;
       }
+      std::shared_ptr<const Tape> below = better(w.simplifier.simplify(*tape, choices), tape);
+      IntervalEvaluator* below_iv =
+        below == tape ? &iv : &w.interval_at(depth + 1, below, below.get() != original);
       for (const Rectangle& child : children(r, tile))
       {
         if (tasks && samples_in(child) <= task_samples)
@@ -375,7 +457,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
   const Rectangle whole{ 0, runs.size(), column_lo, column_hi };
   {
     Walk top{ runs, coordinates, leaf_samples, tile, values, errors, attributes, *top_, &tasks,
-      task_samples };
+      task_samples, sign_only_, iso_, tape_.get() };
     top_->size_buffers(dimension, leaf_samples, attributes.size());
     if (top.samples_in(whole) <= task_samples)
     {
@@ -398,18 +480,21 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
       Worker& w = *mine;
       w.use_block_tape(tasks[t].tape);
       w.size_buffers(dimension, leaf_samples, attributes.size());
-      Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0 };
+      Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0,
+        sign_only_, iso_, tape_.get() };
       walk.node(tasks[t].rectangle, tasks[t].tape, *w.block_interval, 0);
     });
   std::size_t failures = top_->failures;
   instructions_ += top_->instructions;
-  top_->failures = top_->instructions = 0;
+  decided_ += top_->decided;
+  top_->failures = top_->instructions = top_->decided = 0;
   for (const auto& w : workers_)
   {
     if (w)
     {
       failures += w->failures;
       instructions_ += w->instructions;
+      decided_ += w->decided;
     }
   }
   return failures;

@@ -35,14 +35,25 @@ struct SampleRun
   std::int64_t column = 0; ///< axis-0 index of the first sample
 };
 
+struct TileOptions
+{
+  /// Samples per tile side (>= 1); tasks of (4 tile)^2 samples run on the pool. 32 rather than
+  /// 16: the same time on Prospero at 1024^2 (2-D), a third less on the 200-sphere max at 128^3
+  /// (3-D), where the work per box outweighed the shorter tapes of smaller tiles
+  /// (frep_sample_benchmark, 2026-12-02).
+  int tile = 32;
+  /// Only the side of `iso` matters to the caller (SampleOptions::sign_only): a box whose
+  /// interval lies wholly at or above iso, or wholly below it, with no failure possible, is not
+  /// evaluated; its samples get that bound (lo >= iso, or hi < iso) instead of F.
+  bool sign_only = false;
+  double iso = 0.0;
+};
+
 class TiledEvaluator
 {
 public:
-  /// `tile` samples per tile side (>= 1); tasks of (4 tile)^2 samples run on the pool. 32 rather
-  /// than 16: the same time on Prospero at 1024^2 (2-D), a third less on the 200-sphere max at
-  /// 128^3 (3-D), where the work per box outweighed the shorter tapes of smaller tiles
-  /// (frep_sample_benchmark, 2026-12-02).
-  TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool, int tile = 32);
+  TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool,
+    const TileOptions& options = {});
   ~TiledEvaluator();
   TiledEvaluator(const TiledEvaluator&) = delete;
   TiledEvaluator& operator=(const TiledEvaluator&) = delete;
@@ -54,6 +65,8 @@ public:
 
   /// Tape instructions run for the samples so far (each sample counts its tape's length).
   std::size_t instructions() const { return instructions_; }
+  /// Samples whose side of iso a box decided without evaluating them (sign_only), so far.
+  std::size_t decided() const { return decided_; }
 
 private:
   struct Worker;
@@ -62,12 +75,15 @@ private:
   std::shared_ptr<const Tape> tape_;
   std::shared_ptr<ThreadPool> pool_;
   int tile_;
+  bool sign_only_;
+  double iso_;
   IntervalEvaluator block_interval_;
   TapeSimplifier block_simplifier_;
   std::vector<Choice> block_choices_;
   std::vector<std::unique_ptr<Worker>> workers_;
   std::unique_ptr<Worker> top_; // the caller's scratch for the serial top of the quadtree
   std::size_t instructions_ = 0;
+  std::size_t decided_ = 0;
 };
 
 } // namespace sample

@@ -7,7 +7,9 @@
 //    failed;
 //  - GradientEvaluator's F equals the point value;
 //  - tapes simplified for a box (TapeSimplifier, recursively for a sub-box) give the full tape's
-//    outputs and error ids bit for bit at every sampled point of the box.
+//    outputs and error ids bit for bit at every sampled point of the box;
+//  - sign-only grid sampling (tiles decided by their enclosure are not evaluated) gives every
+//    sample the full tape's failure and side of iso.
 #include "conformance_case.h"
 
 #include "Compiler/model.h"
@@ -17,6 +19,7 @@
 #include "Eval/point_evaluator.h"
 #include "Eval/tape_simplifier.h"
 #include "Language/parser.h"
+#include "Sample/grid_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -387,6 +390,79 @@ TEST(Consistency, SimplifiedTapesEqualFullTapesBitForBit)
   // The suite has min/max and conditionals: simplification must happen, or this test tests nothing.
   EXPECT_GT(simplified_boxes, boxes / 20);
   EXPECT_LT(simplified_length, full_length);
+}
+
+/// Per sample of `grid`: 0 outside (F < iso), 1 inside, 2 failed, from sample_grid.
+std::vector<std::uint8_t> sides(const std::shared_ptr<const frep::Tape>& tape,
+  const frep::GridSpec& grid, frep::SampleOptions options, std::size_t& decided)
+{
+  std::vector<std::uint8_t> out(frep::grid_part_size(grid));
+  const frep::SampleResult r = frep::sample_grid(tape, grid, options,
+    [&](const frep::SampleBlock& b)
+    {
+      for (std::size_t p = 0; p < b.count; ++p)
+      {
+        out[b.first + p] = b.failed[p] ? 2 : (b.values[p] >= options.iso ? 1 : 0);
+      }
+    });
+  EXPECT_TRUE(r.ok()) << r.error;
+  decided += r.decided;
+  return out;
+}
+
+TEST(Consistency, SignOnlySamplingGivesEverySampleTheFullTapesSide)
+{
+  std::size_t subjects = 0, samples = 0, decided = 0, not_decided = 0;
+  for (const Subject& s : cached_subjects())
+  {
+    const std::size_t n = s.tape->input_count;
+    if (n == 0 || s.points.empty())
+    {
+      continue;
+    }
+    // The grid over the reference points' bounding box, widened so that tiles lie wholly
+    // outside too; fewer samples per axis in more dimensions.
+    const std::int64_t per_axis = n == 1 ? 4096 : n == 2 ? 96 : n == 3 ? 24 : 8;
+    frep::GridSpec grid;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      double lo = s.points[0][k], hi = lo;
+      for (const auto& p : s.points)
+      {
+        lo = std::min(lo, p[k]);
+        hi = std::max(hi, p[k]);
+      }
+      const double pad = std::max(1.0, 0.25 * (hi - lo));
+      grid.axes.push_back({ lo - pad, hi + pad, per_axis });
+    }
+    for (const double iso : { 0.0, 0.5 })
+    {
+      frep::SampleOptions full;
+      full.simplify = false;
+      full.threads = 1;
+      full.iso = iso;
+      frep::SampleOptions sign = full;
+      sign.sign_only = true;
+      sign.threads = 2;
+      std::size_t ignored = 0;
+      const std::vector<std::uint8_t> expected = sides(s.tape, grid, full, ignored);
+      const std::size_t before = decided;
+      const std::vector<std::uint8_t> got = sides(s.tape, grid, sign, decided);
+      ASSERT_EQ(got.size(), expected.size());
+      for (std::size_t p = 0; p < got.size(); ++p)
+      {
+        ASSERT_EQ(int(got[p]), int(expected[p])) << s.id << " iso " << iso << ": sample " << p;
+      }
+      samples += got.size();
+      not_decided += decided == before ? 1 : 0;
+    }
+    ++subjects;
+  }
+  std::printf("[consistency] sign-only sampling: %zu subjects, %zu samples, %zu decided by "
+              "tiles, each with the full tape's side\n", subjects, samples, decided);
+  // Most grids have tiles wholly inside or outside: deciding must happen, or this tests nothing.
+  EXPECT_GT(subjects, 200u);
+  EXPECT_GT(decided, samples / 4);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 // The engine's grid sampler and its one position formula and size limit: positions exact at the
 // first sample and within rounding at the last, values bit for bit those of the point and
 // gradient evaluators, the limit refused before anything is allocated, cancel, progress and the
-// two failure policies; tile-by-tile simplification changes nothing but the work.
+// two failure policies; tile-by-tile simplification changes nothing but the work; sign-only
+// sampling keeps every sample's side.
 #include "Compiler/model.h"
 #include "Eval/gradient_evaluator.h"
 #include "Eval/point_evaluator.h"
@@ -352,6 +353,46 @@ TEST(GridSampler, TileSimplificationChangesNothingInEveryDimension)
     }
     expect_simplification_changes_nothing(tape, part, options);
   }
+}
+
+TEST(GridSampler, SignOnlyDecidesTilesAndKeepsEverySide)
+{
+  // A sphere of radius 1 in [-3, 3]^2: tiles far inside or outside are decided, the ones on the
+  // circle evaluated. Decided samples hold a bound of F on F's side; the others hold F itself.
+  auto tape = compile("my_model(x[2], a[1]) { my_model = 1 - x[1]^2 - x[2]^2; }");
+  ASSERT_TRUE(tape);
+  const GridSpec grid = cube(2, -3, 3, 512);
+  std::vector<double> exact(grid_part_size(grid)), sign(exact.size());
+  SampleOptions options;
+  options.threads = 2;
+  ASSERT_TRUE(sample_grid(tape, grid, options,
+    [&](const SampleBlock& b) { std::copy_n(b.values, b.count, exact.data() + b.first); }).ok());
+  for (const double iso : { 0.0, 0.75 })
+  {
+    SCOPED_TRACE(iso);
+    options.sign_only = true;
+    options.iso = iso;
+    const SampleResult r = sample_grid(tape, grid, options,
+      [&](const SampleBlock& b) { std::copy_n(b.values, b.count, sign.data() + b.first); });
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_GT(r.decided, exact.size() / 2);
+    EXPECT_LT(r.decided, exact.size());
+    std::size_t same = 0;
+    for (std::size_t p = 0; p < exact.size(); ++p)
+    {
+      ASSERT_EQ(sign[p] >= iso, exact[p] >= iso) << p;
+      // A bound: at or below F inside, at or above it outside.
+      EXPECT_TRUE(exact[p] >= iso ? sign[p] <= exact[p] : sign[p] >= exact[p]) << p;
+      same += std::bit_cast<std::uint64_t>(sign[p]) == std::bit_cast<std::uint64_t>(exact[p]);
+    }
+    EXPECT_GE(same, exact.size() - r.decided); // every evaluated sample is F bit for bit
+  }
+  // Attributes and gradients cannot come from a sign-only run.
+  options.attribute_count = -1;
+  EXPECT_NE(sample_grid(tape, grid, options, {}).error.find("sign_only"), std::string::npos);
+  options.attribute_count = 0;
+  options.gradients = true;
+  EXPECT_NE(sample_grid(tape, grid, options, {}).error.find("sign_only"), std::string::npos);
 }
 
 TEST(GridSampler, APartHasTheValuesOfTheWhole)

@@ -1,0 +1,64 @@
+// Internal to the evaluators: one thread's batch evaluation of a tape, block by block, with its
+// register file, error lanes and call scratch kept between calls and between tapes. BatchEvaluator
+// holds one per pool participant; the tiled sampler holds one per participant and rebinds it to
+// each tile's simplified tape, so a tile pays for its program only, not for a new evaluator (a new
+// register file zero-filled, the checks, the call scratch: a tenth of Prospero's sampling time).
+#pragma once
+
+#include "Compiler/tape.h"
+#include "Eval/batch_evaluator.h"
+#include "Eval/batch_kernel.h"
+#include "Eval/batch_program.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace frep::eval
+{
+
+class BlockRunner
+{
+public:
+  /// `block`: lanes per block (> 0); `simd`: the widest kernel build to use.
+  explicit BlockRunner(int block = 256, SimdLevel simd = SimdLevel::Best);
+  ~BlockRunner();
+  BlockRunner(const BlockRunner&) = delete;
+  BlockRunner& operator=(const BlockRunner&) = delete;
+
+  /// Evaluates `tape` from now on (checked unless `trusted`: a tape the engine made itself, such
+  /// as a simplified one). Keeps the buffers; rebinding the same tape costs nothing.
+  void bind(std::shared_ptr<const Tape> tape, bool trusted = false);
+  const Tape& tape() const { return *tape_; }
+  int block() const { return block_; }
+
+  /// BatchEvaluator::evaluate's contract for the points [base, base + n) (n <= block()): their
+  /// values, errors and attributes go to values + base, errors + base, attributes[j] + base.
+  /// Returns the number of points that raised an error.
+  std::size_t run(std::span<const double* const> inputs, std::size_t base, int n, double* values,
+    std::uint32_t* errors, std::span<double* const> attributes);
+
+  /// All `count` points, block after block, on the calling thread.
+  std::size_t evaluate(std::span<const double* const> inputs, std::size_t count, double* values,
+    std::uint32_t* errors, std::span<double* const> attributes);
+
+private:
+  struct AlignedFree
+  {
+    void operator()(double* p) const;
+  };
+
+  int block_;
+  SimdLevel simd_;
+  std::shared_ptr<const Tape> tape_;
+  BatchProgram program_;
+  std::unique_ptr<double[], AlignedFree> regs_;
+  std::size_t reg_capacity_ = 0; // doubles
+  std::vector<const double*> rows_;
+  std::vector<std::uint32_t> lane_errors_;
+  CallState calls_;
+};
+
+} // namespace frep::eval

@@ -78,9 +78,17 @@ void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted)
   {
     return;
   }
+  bool clear = false;
   if (!trusted)
   {
-    check_tape(*tape, "BatchEvaluator");
+    // The last untrusted tape is remembered: walks come back to their root tape often.
+    if (tape != checked_)
+    {
+      check_tape(*tape, "BatchEvaluator");
+      checked_ = tape;
+      checked_reads_unwritten_ = reads_unwritten_slot(*tape);
+    }
+    clear = checked_reads_unwritten_;
   }
   program_ = make_batch_program(*tape);
   // 64-byte aligned rows: whole cache lines per register row, aligned vector loads. A slot read
@@ -95,7 +103,7 @@ void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted)
     std::fill(regs_.get(), regs_.get() + needed, 0.0);
     reg_capacity_ = needed;
   }
-  else if (!trusted && reads_unwritten_slot(*tape))
+  else if (clear)
   {
     std::fill(regs_.get(), regs_.get() + needed, 0.0);
   }

@@ -53,6 +53,8 @@ private:
   int block_;
   SimdLevel simd_;
   std::shared_ptr<const Tape> tape_;
+  std::shared_ptr<const Tape> checked_; // the last untrusted tape bound, checked
+  bool checked_reads_unwritten_ = false; // ... and whether it reads a slot before writing it
   BatchProgram program_;
   std::unique_ptr<double[], AlignedFree> regs_;
   std::size_t reg_capacity_ = 0; // doubles

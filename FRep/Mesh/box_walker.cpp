@@ -2,6 +2,7 @@
 // and contours.
 #include "Mesh/extraction_common.h"
 
+#include "Eval/block_runner.h"
 #include "Eval/thread_pool.h"
 
 #include <chrono>
@@ -17,22 +18,49 @@ BoxWalker::Level::Level(std::shared_ptr<const Tape> t)
 {
 }
 
+void BoxWalker::Level::rebind(std::shared_ptr<const Tape> t)
+{
+  tape = std::move(t);
+  interval.rebind(tape, true);
+  choices.resize(tape->code.size());
+  simplifiable = may_simplify(*tape);
+}
+
 BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
   const ExtractOptions& options)
   : frame_(frame)
   , options_(options)
-  , caller_only_(std::make_shared<ThreadPool>(1))
   , root_(tape)
+  , runner_(std::make_unique<eval::BlockRunner>())
 {
+}
+
+BoxWalker::~BoxWalker() = default;
+
+BoxWalker::Level& BoxWalker::level_below(std::size_t depth, std::shared_ptr<const Tape> tape)
+{
+  if (below_.size() <= depth)
+  {
+    below_.resize(depth + 1);
+  }
+  if (!below_[depth])
+  {
+    below_[depth] = std::make_unique<Level>(std::move(tape));
+  }
+  else
+  {
+    below_[depth]->rebind(std::move(tape));
+  }
+  return *below_[depth];
 }
 
 void BoxWalker::run(const CellBox& block, Piece& piece)
 {
   builder_.begin(&piece);
-  walk(block, root_);
+  walk(block, root_, 0);
 }
 
-void BoxWalker::walk(const CellBox& box, Level& level)
+void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth)
 {
   Piece& piece = builder_.piece();
   const bool simplify = options_.cull && options_.simplify && level.simplifiable;
@@ -52,16 +80,15 @@ void BoxWalker::walk(const CellBox& box, Level& level)
     }
   }
   // Below this box, evaluate only what the box left undecided.
-  std::unique_ptr<Level> simplified;
+  Level* below = &level;
   if (simplify)
   {
     std::shared_ptr<const Tape> tape = simplifier_.simplify(*level.tape, level.choices);
     if (tape && worth_switching(*tape, *level.tape))
     {
-      simplified = std::make_unique<Level>(std::move(tape));
+      below = &level_below(depth, std::move(tape));
     }
   }
-  Level& below = simplified ? *simplified : level;
   const std::int64_t leaf_cells = options_.leaf_cells;
   bool is_leaf = true;
   for (int a = 0; a < frame_.dimension; ++a)
@@ -70,13 +97,13 @@ void BoxWalker::walk(const CellBox& box, Level& level)
   }
   if (is_leaf)
   {
-    sample(box, below);
+    sample(box, *below);
     leaf(box);
     return;
   }
   for (const CellBox& child : split(box, leaf_cells, frame_.dimension))
   {
-    walk(child, below);
+    walk(child, *below, depth + 1);
   }
 }
 
@@ -109,16 +136,11 @@ void BoxWalker::sample(const CellBox& box, Level& level)
   }
   const std::array<const double*, 3> inputs{ xs_.data(), ys_.data(), zs_.data() };
   Piece& piece = builder_.piece();
-  if (!level.batch)
-  {
-    BatchOptions options;
-    options.pool = caller_only_;
-    level.batch = std::make_unique<BatchEvaluator>(level.tape, options);
-  }
+  runner_->bind(level.tape, &level != &root_); // (the root's tape is checked once)
   piece.sample_instructions += count * level.tape->code.size();
-  piece.failed_samples += level.batch->evaluate(
+  piece.failed_samples += runner_->evaluate(
     std::span<const double* const>(inputs.data(), static_cast<std::size_t>(frame_.dimension)),
-    count, values_.data());
+    count, values_.data(), nullptr, {});
   piece.samples += count;
   for (double& v : values_)
   {

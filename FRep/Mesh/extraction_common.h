@@ -17,6 +17,11 @@
 #include <unordered_map>
 #include <vector>
 
+namespace frep::eval
+{
+class BlockRunner;
+}
+
 namespace frep
 {
 class ThreadPool;
@@ -171,7 +176,7 @@ class BoxWalker
 public:
   BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
     const ExtractOptions& options);
-  virtual ~BoxWalker() = default;
+  virtual ~BoxWalker();
   BoxWalker(const BoxWalker&) = delete;
   BoxWalker& operator=(const BoxWalker&) = delete;
 
@@ -191,25 +196,28 @@ protected:
   PieceBuilder builder_;
 
 private:
-  /// A tape and its evaluators: the model's tape at the root, a simplified one below a box that
-  /// decided some of its instructions (tape_simplifier.h; the values are the same bit for bit).
+  /// A tape and its interval evaluator: the model's tape at the root, a simplified one below a
+  /// box that decided some of its instructions (tape_simplifier.h; the values are the same bit
+  /// for bit). One per depth of the walk, rebound to each box's tape (none is made per box).
   struct Level
   {
     std::shared_ptr<const Tape> tape;
     IntervalEvaluator interval;
-    std::unique_ptr<BatchEvaluator> batch; // made when the level samples
     std::vector<Choice> choices;
     bool simplifiable = false; // may_simplify(*tape)
 
     explicit Level(std::shared_ptr<const Tape> t);
+    void rebind(std::shared_ptr<const Tape> t); // a simplified tape (trusted)
   };
 
-  void walk(const CellBox& box, Level& level);
+  void walk(const CellBox& box, Level& level, std::size_t depth);
   void sample(const CellBox& box, Level& level);
+  Level& level_below(std::size_t depth, std::shared_ptr<const Tape> tape);
 
-  std::shared_ptr<ThreadPool> caller_only_; // walkers run on the extraction's threads already
   TapeSimplifier simplifier_;
   Level root_;
+  std::vector<std::unique_ptr<Level>> below_; // [d]: the level below a box at depth d
+  std::unique_ptr<eval::BlockRunner> runner_; // samples the leaves, rebound to their tapes
   std::vector<double> xs_, ys_, zs_, values_;
 };
 

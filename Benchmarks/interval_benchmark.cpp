@@ -1,0 +1,170 @@
+// The work one box costs the tiled sampler, the mesher and the ray caster, per instruction of
+// the box's tape: interval evaluation with choices recorded, simplification, and both on the
+// simplified tape of a sub-box (what a quadtree does next). The model is any file frepkit reads.
+//
+// Usage: frep_interval_benchmark MODEL [--box x0,y0[,z0..],x1,y1[,z1..]] [--boxes 2000]
+//                                [--size 0.05]
+// Boxes: --boxes random boxes of side --size (relative to the model box) inside the box.
+#include "Compiler/model.h"
+#include "Eval/interval_evaluator.h"
+#include "Eval/tape_simplifier.h"
+#include "Language/parser.h"
+#include "Language/vm_reader.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+double ns_since(Clock::time_point t)
+{
+  return std::chrono::duration<double, std::nano>(Clock::now() - t).count();
+}
+
+std::vector<double> numbers(const std::string& text)
+{
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    out.push_back(std::stod(item));
+  }
+  return out;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    std::cerr << "usage: frep_interval_benchmark MODEL [--box ...] [--boxes N] [--size S]\n";
+    return 1;
+  }
+  const std::string path = argv[1];
+  std::vector<double> box;
+  int boxes = 2000;
+  double size = 0.05;
+  for (int i = 2; i + 1 < argc; i += 2)
+  {
+    const std::string option = argv[i];
+    const std::string value = argv[i + 1];
+    if (option == "--box")
+    {
+      box = numbers(value);
+    }
+    else if (option == "--boxes")
+    {
+      boxes = std::max(1, std::stoi(value));
+    }
+    else if (option == "--size")
+    {
+      size = std::stod(value);
+    }
+    else
+    {
+      std::cerr << "unknown option " << option << "\n";
+      return 1;
+    }
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const frep::ParseResult parsed =
+    frep::is_vm_file(path) ? frep::parse_vm(text, path) : frep::parse_program(text, path);
+  if (!parsed.ok())
+  {
+    std::cerr << frep::format_diagnostics(parsed.diagnostics);
+    return 1;
+  }
+  const auto compiled =
+    frep::Model::compile(parsed.program, frep::ast::select_default_object(*parsed.program));
+  if (!compiled.model)
+  {
+    std::cerr << frep::format_diagnostics(compiled.diagnostics);
+    return 1;
+  }
+  const auto tape = compiled.model->tape();
+  const std::size_t d = tape->input_count;
+  if (box.size() != 2 * d)
+  {
+    box.assign(2 * d, 0.0);
+    for (std::size_t k = 0; k < d; ++k)
+    {
+      box[k] = -1;
+      box[d + k] = 1;
+    }
+  }
+  std::mt19937_64 rng(7);
+  std::vector<std::vector<frep::Interval>> regions;
+  for (int b = 0; b < boxes; ++b)
+  {
+    std::vector<frep::Interval> r(d);
+    for (std::size_t k = 0; k < d; ++k)
+    {
+      const double w = (box[d + k] - box[k]) * size;
+      const double lo = std::uniform_real_distribution<double>(box[k], box[d + k] - w)(rng);
+      r[k] = { lo, lo + w };
+    }
+    regions.push_back(std::move(r));
+  }
+
+  frep::IntervalEvaluator interval(tape);
+  frep::TapeSimplifier simplifier;
+  std::vector<frep::Choice> choices(tape->code.size());
+  double interval_ns = 0, simplify_ns = 0, inner_interval_ns = 0, inner_simplify_ns = 0;
+  std::size_t simplified_length = 0, inner_length = 0, inner_instructions = 0;
+  frep::IntervalEvaluator inner(tape);
+  std::vector<frep::Choice> inner_choices;
+  for (const auto& r : regions)
+  {
+    auto t = Clock::now();
+    interval.evaluate(r, choices);
+    interval_ns += ns_since(t);
+    t = Clock::now();
+    const auto simplified = simplifier.simplify(*tape, choices);
+    simplify_ns += ns_since(t);
+    const auto below = simplified ? simplified : tape;
+    simplified_length += below->code.size();
+    // A quarter of the box, from the simplified tape.
+    std::vector<frep::Interval> q = r;
+    for (auto& iv : q)
+    {
+      iv.hi = iv.lo + (iv.hi - iv.lo) / 2;
+    }
+    inner.rebind(below, simplified != nullptr);
+    inner_choices.resize(below->code.size());
+    t = Clock::now();
+    inner.evaluate(q, inner_choices);
+    inner_interval_ns += ns_since(t);
+    t = Clock::now();
+    const auto twice = simplifier.simplify(*below, inner_choices);
+    inner_simplify_ns += ns_since(t);
+    inner_instructions += below->code.size();
+    inner_length += twice ? twice->code.size() : below->code.size();
+  }
+  const double n = double(boxes) * double(tape->code.size());
+  std::printf("%s: %zu instructions, %d boxes of relative side %g\n", path.c_str(),
+    tape->code.size(), boxes, size);
+  std::printf("| step | ns per box | ns per instruction | tape after (mean instructions) |\n"
+              "|---|---:|---:|---:|\n");
+  std::printf("| interval, full tape | %.0f | %.2f | |\n", interval_ns / boxes, interval_ns / n);
+  std::printf("| simplify, full tape | %.0f | %.2f | %.1f |\n", simplify_ns / boxes, simplify_ns / n,
+    double(simplified_length) / boxes);
+  std::printf("| interval, sub-box | %.0f | %.2f | |\n", inner_interval_ns / boxes,
+    inner_interval_ns / double(inner_instructions));
+  std::printf("| simplify, sub-box | %.0f | %.2f | %.1f |\n", inner_simplify_ns / boxes,
+    inner_simplify_ns / double(inner_instructions), double(inner_length) / boxes);
+  return 0;
+}

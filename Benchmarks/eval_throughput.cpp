@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <iostream>
+#include <cstdlib>
 #include <random>
 
 namespace
@@ -80,6 +81,11 @@ void batch(benchmark::State& state, const Prepared* p, int threads)
 {
   frep::BatchOptions options;
   options.threads = threads;
+  // FREP_BLOCK_SIZE=N measures another block size (lanes per block; the default is 256).
+  if (const char* block = std::getenv("FREP_BLOCK_SIZE"))
+  {
+    options.block_size = std::max(1, std::atoi(block));
+  }
   frep::BatchEvaluator evaluator(p->tape, options);
   std::vector<const double*> inputs;
   for (const auto& column : p->points)

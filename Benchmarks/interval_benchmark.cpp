@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -154,6 +155,24 @@ int main(int argc, char** argv)
     inner_instructions += below->code.size();
     inner_length += twice ? twice->code.size() : below->code.size();
   }
+  // What the tape is made of (the opcodes' mix decides the cost per instruction).
+  std::map<std::string, int> mix;
+  for (const frep::Instruction& ins : tape->code)
+  {
+    ++mix[frep::opcode_name(ins.op)];
+  }
+  std::vector<std::pair<int, std::string>> ranked;
+  for (const auto& [name, count] : mix)
+  {
+    ranked.emplace_back(count, name);
+  }
+  std::sort(ranked.rbegin(), ranked.rend());
+  std::printf("opcodes:");
+  for (const auto& [count, name] : ranked)
+  {
+    std::printf(" %s %d", name.c_str(), count);
+  }
+  std::printf("\n");
   const double n = double(boxes) * double(tape->code.size());
   std::printf("%s: %zu instructions, %d boxes of relative side %g\n", path.c_str(),
     tape->code.size(), boxes, size);

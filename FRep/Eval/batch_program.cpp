@@ -126,6 +126,7 @@ BatchProgram make_batch_program(const Tape& tape)
     }
     program.code.push_back(ins);
     program.immediate.push_back(side);
+    program.origin.push_back(static_cast<std::uint32_t>(i));
   }
   return program;
 }

@@ -24,6 +24,7 @@ struct BatchProgram
 {
   std::vector<Instruction> code;
   std::vector<Immediate> immediate; ///< parallel to code
+  std::vector<std::uint32_t> origin; ///< parallel to code: the instruction's index in the tape
 };
 
 /// Whether the batch kernel has an immediate form of `op` for operand a or b.

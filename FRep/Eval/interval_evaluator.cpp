@@ -10,6 +10,7 @@
 //   magnitudes (see r_function()).
 #include "Eval/interval_evaluator.h"
 
+#include "Eval/batch_program.h"
 #include "Semantics/op_semantics.h"
 #include "Compiler/tape_check.h"
 
@@ -671,6 +672,17 @@ IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
     throw std::invalid_argument("IntervalEvaluator: null tape");
   }
   eval::check_tape(*tape_, "IntervalEvaluator");
+  prepare();
+}
+
+void IntervalEvaluator::prepare()
+{
+  eval::BatchProgram program = eval::make_batch_program(*tape_);
+  code_ = std::move(program.code);
+  origin_ = std::move(program.origin);
+  immediate_.resize(program.immediate.size());
+  std::transform(program.immediate.begin(), program.immediate.end(), immediate_.begin(),
+    [](eval::Immediate i) { return static_cast<std::uint8_t>(i); });
   slots_.assign(tape_->slot_count, Interval::everything());
   may_nan_.assign(tape_->slot_count, 1);
 }
@@ -689,9 +701,8 @@ void IntervalEvaluator::rebind(std::shared_ptr<const Tape> tape, bool trusted)
   {
     eval::check_tape(*tape, "IntervalEvaluator");
   }
-  slots_.assign(tape->slot_count, Interval::everything());
-  may_nan_.assign(tape->slot_count, 1);
   tape_ = std::move(tape);
+  prepare();
 }
 
 IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
@@ -743,9 +754,13 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
     slots_[s] = r.v;
     may_nan_[s] = r.nan ? 1 : 0;
   };
-  for (std::size_t at = 0; at < tape.code.size(); ++at)
+  // An immediate operand: the constant's range (a NaN constant may be anything, as a Const slot).
+  const auto immediate = [](double v)
+  { return std::isnan(v) ? whole(true) : Range{ Interval::point(v), false }; };
+  for (std::size_t j = 0; j < code_.size(); ++j)
   {
-    const Instruction& ins = tape.code[at];
+    const Instruction& ins = code_[j];
+    const std::size_t at = origin_[j];
     const Opcode op = ins.op;
     if (op == Opcode::Call)
     {
@@ -768,8 +783,13 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       continue;
     }
     const int operands = operands_by_opcode[static_cast<std::size_t>(op)];
-    const Range a = operands >= 1 ? get(ins.a) : Range{};
-    const Range b = operands >= 2 ? get(ins.b) : Range{};
+    const auto side = static_cast<eval::Immediate>(immediate_[j]);
+    const Range a = side == eval::Immediate::A ? immediate(ins.imm)
+                  : operands >= 1             ? get(ins.a)
+                                              : Range{};
+    const Range b = side == eval::Immediate::B ? immediate(ins.imm)
+                  : operands >= 2             ? get(ins.b)
+                                              : Range{};
     if (op == Opcode::ErrorIf)
     {
       const bool may_fire = may_be_nonzero(a);

@@ -47,7 +47,14 @@ public:
 private:
   IntervalResult run(std::span<const Interval> box, Choice* choices);
 
+  void prepare(); // the program below, from tape_
+
   std::shared_ptr<const Tape> tape_;
+  // The tape with constant operands folded into their readers (eval::make_batch_program): a
+  // quarter of the instructions of the models measured are Const, each an iteration of the loop.
+  std::vector<Instruction> code_;
+  std::vector<std::uint8_t> immediate_; // eval::Immediate per instruction of code_
+  std::vector<std::uint32_t> origin_;   // its index in the tape (for choices)
   std::vector<Interval> slots_;        // encloses the slot's non-NaN values over the box
   std::vector<unsigned char> may_nan_; // the slot may be NaN somewhere in the box
 };

@@ -672,19 +672,27 @@ IntervalEvaluator::IntervalEvaluator(std::shared_ptr<const Tape> tape)
     throw std::invalid_argument("IntervalEvaluator: null tape");
   }
   eval::check_tape(*tape_, "IntervalEvaluator");
-  prepare();
+  prepare(true);
 }
 
-void IntervalEvaluator::prepare()
+void IntervalEvaluator::prepare(bool fold)
 {
+  slots_.assign(tape_->slot_count, Interval::everything());
+  may_nan_.assign(tape_->slot_count, 1);
+  folded_ = fold;
+  if (!fold)
+  {
+    code_.clear();
+    immediate_.clear();
+    origin_.clear();
+    return;
+  }
   eval::BatchProgram program = eval::make_batch_program(*tape_);
   code_ = std::move(program.code);
   origin_ = std::move(program.origin);
   immediate_.resize(program.immediate.size());
   std::transform(program.immediate.begin(), program.immediate.end(), immediate_.begin(),
     [](eval::Immediate i) { return static_cast<std::uint8_t>(i); });
-  slots_.assign(tape_->slot_count, Interval::everything());
-  may_nan_.assign(tape_->slot_count, 1);
 }
 
 void IntervalEvaluator::rebind(std::shared_ptr<const Tape> tape, bool trusted)
@@ -702,7 +710,7 @@ void IntervalEvaluator::rebind(std::shared_ptr<const Tape> tape, bool trusted)
     eval::check_tape(*tape, "IntervalEvaluator");
   }
   tape_ = std::move(tape);
-  prepare();
+  prepare(false);
 }
 
 IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
@@ -757,10 +765,11 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
   // An immediate operand: the constant's range (a NaN constant may be anything, as a Const slot).
   const auto immediate = [](double v)
   { return std::isnan(v) ? whole(true) : Range{ Interval::point(v), false }; };
-  for (std::size_t j = 0; j < code_.size(); ++j)
+  const std::vector<Instruction>& code = folded_ ? code_ : tape.code;
+  for (std::size_t j = 0; j < code.size(); ++j)
   {
-    const Instruction& ins = code_[j];
-    const std::size_t at = origin_[j];
+    const Instruction& ins = code[j];
+    const std::size_t at = folded_ ? origin_[j] : j;
     const Opcode op = ins.op;
     if (op == Opcode::Call)
     {
@@ -783,7 +792,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       continue;
     }
     const int operands = operands_by_opcode[static_cast<std::size_t>(op)];
-    const auto side = static_cast<eval::Immediate>(immediate_[j]);
+    const auto side = folded_ ? static_cast<eval::Immediate>(immediate_[j]) : eval::Immediate::None;
     const Range a = side == eval::Immediate::A ? immediate(ins.imm)
                   : operands >= 1             ? get(ins.a)
                                               : Range{};

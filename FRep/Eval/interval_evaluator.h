@@ -47,11 +47,14 @@ public:
 private:
   IntervalResult run(std::span<const Interval> box, Choice* choices);
 
-  void prepare(); // the program below, from tape_
+  void prepare(bool fold); // the buffers and, with fold, the program below, from tape_
 
   std::shared_ptr<const Tape> tape_;
   // The tape with constant operands folded into their readers (eval::make_batch_program): a
   // quarter of the instructions of the models measured are Const, each an iteration of the loop.
+  // Made by the constructor only: a rebound tape is evaluated for a few boxes, and folding it
+  // cost the tiled sampler more than it saved (Benchmarks/README.md, 2026-12-03).
+  bool folded_ = false;
   std::vector<Instruction> code_;
   std::vector<std::uint8_t> immediate_; // eval::Immediate per instruction of code_
   std::vector<std::uint32_t> origin_;   // its index in the tape (for choices)

@@ -106,12 +106,19 @@ struct TiledEvaluator::Worker
     return *intervals[depth];
   }
 
-  void use_block_tape(const std::shared_ptr<const Tape>& tape)
+  void use_block_tape(const std::shared_ptr<const Tape>& tape, bool trusted)
   {
     if (block_tape != tape)
     {
       block_tape = tape;
-      block_interval = std::make_unique<IntervalEvaluator>(tape);
+      if (block_interval)
+      {
+        block_interval->rebind(tape, trusted);
+      }
+      else
+      {
+        block_interval = std::make_unique<IntervalEvaluator>(tape);
+      }
     }
   }
 
@@ -465,7 +472,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     }
     else
     {
-      top_->use_block_tape(block_tape);
+      top_->use_block_tape(block_tape, block_tape != tape_);
       top.node(whole, block_tape, *top_->block_interval, 0);
     }
   }
@@ -478,7 +485,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         mine = std::make_unique<Worker>();
       }
       Worker& w = *mine;
-      w.use_block_tape(tasks[t].tape);
+      w.use_block_tape(tasks[t].tape, tasks[t].tape != tape_);
       w.size_buffers(dimension, leaf_samples, attributes.size());
       Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0,
         sign_only_, iso_, tape_.get() };

@@ -5,11 +5,10 @@
 // Usage: frep_interval_benchmark MODEL [--box x0,y0[,z0..],x1,y1[,z1..]] [--boxes 2000]
 //                                [--size 0.05]
 // Boxes: --boxes random boxes of side --size (relative to the model box) inside the box.
-#include "Compiler/model.h"
+#include "benchmark_cli.h"
+
 #include "Eval/interval_evaluator.h"
 #include "Eval/tape_simplifier.h"
-#include "Language/parser.h"
-#include "Language/vm_reader.h"
 
 #include <algorithm>
 #include <chrono>
@@ -33,18 +32,6 @@ double ns_since(Clock::time_point t)
   return std::chrono::duration<double, std::nano>(Clock::now() - t).count();
 }
 
-std::vector<double> numbers(const std::string& text)
-{
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    out.push_back(std::stod(item));
-  }
-  return out;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -64,7 +51,7 @@ int main(int argc, char** argv)
     const std::string value = argv[i + 1];
     if (option == "--box")
     {
-      box = numbers(value);
+      box = frep::bench::comma_numbers(value);
     }
     else if (option == "--boxes")
     {
@@ -80,23 +67,12 @@ int main(int argc, char** argv)
       return 1;
     }
   }
-  std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const frep::ParseResult parsed =
-    frep::is_vm_file(path) ? frep::parse_vm(text, path) : frep::parse_program(text, path);
-  if (!parsed.ok())
+  const auto model = frep::bench::compile_model_file(path);
+  if (!model)
   {
-    std::cerr << frep::format_diagnostics(parsed.diagnostics);
     return 1;
   }
-  const auto compiled =
-    frep::Model::compile(parsed.program, frep::ast::select_default_object(*parsed.program));
-  if (!compiled.model)
-  {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
-    return 1;
-  }
-  const auto tape = compiled.model->tape();
+  const auto tape = model->tape();
   const std::size_t d = tape->input_count;
   if (box.size() != 2 * d)
   {

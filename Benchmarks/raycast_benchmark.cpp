@@ -6,6 +6,8 @@
 // Usage: frep_raycast_benchmark MODEL [--fix 0.5,0.5] [--size 1280,720] [--grid 128]
 //                               [--threads 0] [--floor]
 //   --fix gives x4, x5, ... (the coordinates after the first three), as many as the model has.
+#include "benchmark_cli.h"
+
 #include "Raycast/raycast.h"
 #include "Render/camera.h"
 #include "Render/mesh_renderer.h"
@@ -32,18 +34,6 @@ double seconds_since(Clock::time_point t)
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-std::vector<double> numbers(const std::string& text)
-{
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    out.push_back(std::stod(item));
-  }
-  return out;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -66,11 +56,11 @@ int main(int argc, char** argv)
     }
     else if (i + 1 < argc && a == "--fix")
     {
-      fix = numbers(argv[++i]);
+      fix = frep::bench::comma_numbers(argv[++i]);
     }
     else if (i + 1 < argc && a == "--size")
     {
-      size = numbers(argv[++i]);
+      size = frep::bench::comma_numbers(argv[++i]);
     }
     else if (i + 1 < argc && a == "--grid")
     {

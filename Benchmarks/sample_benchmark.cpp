@@ -6,9 +6,8 @@
 // Usage: frep_sample_benchmark MODEL [--box x0,y0[,z0],x1,y1[,z1]] [--grid N] [--repeat 5]
 //                              [--threads 0] [--only simplified|full|sign]
 // Prints one Markdown row per mode: median wall milliseconds of sample_grid over the repeats.
-#include "Compiler/model.h"
-#include "Language/parser.h"
-#include "Language/vm_reader.h"
+#include "benchmark_cli.h"
+
 #include "Sample/grid_sampler.h"
 
 #include <algorithm>
@@ -29,18 +28,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t)
 {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
-std::vector<double> numbers(const std::string& text)
-{
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    out.push_back(std::stod(item));
-  }
-  return out;
 }
 
 double median(std::vector<double> v)
@@ -70,7 +57,7 @@ int main(int argc, char** argv)
     const std::string value = argv[i + 1];
     if (option == "--box")
     {
-      box = numbers(value);
+      box = frep::bench::comma_numbers(value);
     }
     else if (option == "--grid")
     {
@@ -94,26 +81,15 @@ int main(int argc, char** argv)
       return 1;
     }
   }
-  std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto start = Clock::now();
-  const frep::ParseResult parsed =
-    frep::is_vm_file(path) ? frep::parse_vm(text, path) : frep::parse_program(text, path);
-  if (!parsed.ok())
+  const auto model = frep::bench::compile_model_file(path);
+  if (!model)
   {
-    std::cerr << frep::format_diagnostics(parsed.diagnostics);
     return 1;
   }
-  const auto compiled =
-    frep::Model::compile(parsed.program, frep::ast::select_default_object(*parsed.program));
-  if (!compiled.model)
-  {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
-    return 1;
-  }
-  const double parse_ms = ms_since(start);
+  const double parse_ms = ms_since(start); // (reading the file included)
   start = Clock::now();
-  const auto tape = compiled.model->tape();
+  const auto tape = model->tape();
   const double specialise_ms = ms_since(start);
   const std::size_t d = tape->input_count;
   if (box.size() != 2 * d)

@@ -36,7 +36,7 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
   options.failures = frep::FailurePolicy::NaN;
   options.max_samples = kMaxSectionSamples;
   options.threads = threads;
-  options.sign_only = sign_only && !attributes;
+  options.sign_only = sign_only; // (with attributes the sampler refuses: check_grid)
   options.iso = iso;
   // Refused before the section's arrays are allocated.
   if (const std::string problem = frep::check_grid(spec, tape->input_count, options);

@@ -55,6 +55,31 @@ bool decides_side(const IntervalResult& r, double iso, double& bound)
   return false;
 }
 
+/// Samples [first, first + n) decided by a box: the bound, and no error.
+void fill_side(double* values, std::uint32_t* errors, std::size_t first, std::size_t n, double bound)
+{
+  std::fill_n(values + first, n, bound);
+  if (errors)
+  {
+    std::fill_n(errors + first, n, 0u);
+  }
+}
+
+/// `evaluator` bound to `tape`: made on first use, rebound (buffers kept) after.
+IntervalEvaluator& bound_interval(std::unique_ptr<IntervalEvaluator>& evaluator,
+  const std::shared_ptr<const Tape>& tape, bool trusted)
+{
+  if (evaluator)
+  {
+    evaluator->rebind(tape, trusted);
+  }
+  else
+  {
+    evaluator = std::make_unique<IntervalEvaluator>(tape);
+  }
+  return *evaluator;
+}
+
 /// `simplified` if it is worth evaluating instead of `from`, else `from`.
 std::shared_ptr<const Tape> better(std::shared_ptr<const Tape> simplified,
   const std::shared_ptr<const Tape>& from)
@@ -64,14 +89,12 @@ std::shared_ptr<const Tape> better(std::shared_ptr<const Tape> simplified,
 
 } // namespace
 
-/// What one pool participant keeps between tasks: its simplifier, the block tape's interval
-/// evaluator (remade when the block's tape changes), one interval evaluator per depth of the
-/// walk and one batch runner, rebound to each box's tape (no evaluator is made per box), and the
-/// gathered samples of a tile.
+/// What one pool participant keeps between tasks: its simplifier, the interval evaluator of its
+/// task's tape, one interval evaluator per depth of the walk and one batch runner, all rebound to
+/// each box's tape (no evaluator is made per box), and the gathered samples of a tile.
 struct TiledEvaluator::Worker
 {
   TapeSimplifier simplifier;
-  std::shared_ptr<const Tape> block_tape;
   std::unique_ptr<IntervalEvaluator> block_interval;
   std::vector<std::unique_ptr<IntervalEvaluator>> intervals; // per depth of the walk
   eval::BlockRunner runner;
@@ -95,31 +118,7 @@ struct TiledEvaluator::Worker
     {
       intervals.resize(depth + 1);
     }
-    if (!intervals[depth])
-    {
-      intervals[depth] = std::make_unique<IntervalEvaluator>(tape);
-    }
-    else
-    {
-      intervals[depth]->rebind(tape, trusted);
-    }
-    return *intervals[depth];
-  }
-
-  void use_block_tape(const std::shared_ptr<const Tape>& tape, bool trusted)
-  {
-    if (block_tape != tape)
-    {
-      block_tape = tape;
-      if (block_interval)
-      {
-        block_interval->rebind(tape, trusted);
-      }
-      else
-      {
-        block_interval = std::make_unique<IntervalEvaluator>(tape);
-      }
-    }
+    return bound_interval(intervals[depth], tape, trusted);
   }
 
   std::vector<Choice>& choices_at(std::size_t depth, std::size_t size)
@@ -272,11 +271,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
   double bound = 0.0;
   if (sign_only_ && decides_side(enclosure, iso_, bound))
   {
-    std::fill_n(values, count, bound);
-    if (errors)
-    {
-      std::fill_n(errors, count, 0u);
-    }
+    fill_side(values, errors, 0, count, bound);
     decided_ += count;
     return 0;
   }
@@ -332,11 +327,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
       for_each_segment(runs, r,
         [&](std::size_t first, std::size_t n)
         {
-          std::fill_n(values + first, n, bound);
-          if (errors)
-          {
-            std::fill_n(errors + first, n, 0u);
-          }
+          fill_side(values, errors, first, n, bound);
           w.decided += n;
         });
       return true;
@@ -472,8 +463,9 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     }
     else
     {
-      top_->use_block_tape(block_tape, block_tape != tape_);
-      top.node(whole, block_tape, *top_->block_interval, 0);
+      IntervalEvaluator& block_interval =
+        bound_interval(top_->block_interval, block_tape, block_tape != tape_);
+      top.node(whole, block_tape, block_interval, 0);
     }
   }
   pool_->parallel_for(tasks.size(),
@@ -485,11 +477,12 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         mine = std::make_unique<Worker>();
       }
       Worker& w = *mine;
-      w.use_block_tape(tasks[t].tape, tasks[t].tape != tape_);
+      IntervalEvaluator& task_interval =
+        bound_interval(w.block_interval, tasks[t].tape, tasks[t].tape != tape_);
       w.size_buffers(dimension, leaf_samples, attributes.size());
       Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0,
         sign_only_, iso_, tape_.get() };
-      walk.node(tasks[t].rectangle, tasks[t].tape, *w.block_interval, 0);
+      walk.node(tasks[t].rectangle, tasks[t].tape, task_interval, 0);
     });
   std::size_t failures = top_->failures;
   instructions_ += top_->instructions;

@@ -86,7 +86,13 @@ void batch(benchmark::State& state, const Prepared* p, int threads)
   {
     options.block_size = std::max(1, std::atoi(block));
   }
+  // FREP_JIT=0 measures the interpreter where the tape would be compiled to machine code.
+  if (const char* jit = std::getenv("FREP_JIT"))
+  {
+    options.jit = std::atoi(jit) != 0;
+  }
   frep::BatchEvaluator evaluator(p->tape, options);
+  state.counters["compiled"] = evaluator.compiled() ? 1 : 0;
   std::vector<const double*> inputs;
   for (const auto& column : p->points)
   {

@@ -7,7 +7,7 @@
 //              calls the engine point by point (vtkFRepImplicitFunction), then vtkFlyingEdges3D,
 //              STDThread SMP backend.
 // Usage: frep_mesh_benchmark [--sizes 128,256,512] [--models sphere,csg,HF_sample,union200_chain]
-//                            [--repeat 3] [--vtk-max-samples 3e7]
+//                            [--repeat 3] [--vtk-max-samples 3e7] [--jit 1]
 // The VTK baseline is skipped (printed as "-") above --vtk-max-samples grid points: at 512^3 it
 // takes minutes per model.
 #include "benchmark_models.h"
@@ -72,7 +72,7 @@ struct Run
 };
 
 Run run_frepkit(const std::shared_ptr<const frep::Tape>& tape, const frep::bench::BenchModel& m,
-  int n, bool simplify, bool& closed)
+  int n, bool simplify, bool jit, bool& closed)
 {
   frep::mesh::Grid grid;
   grid.lo = m.lo;
@@ -82,6 +82,7 @@ Run run_frepkit(const std::shared_ptr<const frep::Tape>& tape, const frep::bench
   const std::clock_t cpu_start = std::clock();
   frep::mesh::ExtractOptions options;
   options.simplify = simplify;
+  options.jit = jit;
   const frep::mesh::ExtractResult r = frep::mesh::extract_surface(tape, grid, options);
   Run run;
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -140,6 +141,7 @@ int main(int argc, char** argv)
     "union200_balanced" };
   int repeat = 3;
   double vtk_max_samples = 3e7;
+  bool jit = true; // --jit 0: the interpreter only (ExtractOptions::jit)
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i];
@@ -163,6 +165,10 @@ int main(int argc, char** argv)
     else if (option == "--vtk-max-samples")
     {
       vtk_max_samples = std::stod(value);
+    }
+    else if (option == "--jit")
+    {
+      jit = std::stoi(value) != 0;
     }
     else
     {
@@ -195,14 +201,14 @@ int main(int argc, char** argv)
       bool closed = false, closed_unsimplified = false;
       for (int r = 0; r < repeat; ++r)
       {
-        ours = run_frepkit(tape, *it, n, true, closed);
+        ours = run_frepkit(tape, *it, n, true, jit, closed);
         times.push_back(ours.seconds);
       }
       const double frepkit_seconds = median(times);
       times.clear();
       for (int r = 0; r < repeat; ++r)
       {
-        unsimplified = run_frepkit(tape, *it, n, false, closed_unsimplified);
+        unsimplified = run_frepkit(tape, *it, n, false, jit, closed_unsimplified);
         times.push_back(unsimplified.seconds);
       }
       const double unsimplified_seconds = median(times);

@@ -4,7 +4,7 @@
 // prospero.vm, which this program does not ship).
 //
 // Usage: frep_sample_benchmark MODEL [--box x0,y0[,z0],x1,y1[,z1]] [--grid N] [--repeat 5]
-//                              [--threads 0] [--only simplified|full|sign]
+//                              [--threads 0] [--only simplified|full|sign] [--jit 1]
 // Prints one Markdown row per mode: median wall milliseconds of sample_grid over the repeats.
 #include "benchmark_cli.h"
 
@@ -50,6 +50,7 @@ int main(int argc, char** argv)
   std::int64_t n = 1024;
   int repeat = 5;
   int threads = 0;
+  bool jit = true; // --jit 0: the interpreter only (SampleOptions::jit)
   std::string only;
   for (int i = 2; i + 1 < argc; i += 2)
   {
@@ -74,6 +75,10 @@ int main(int argc, char** argv)
     else if (option == "--threads")
     {
       threads = std::stoi(value);
+    }
+    else if (option == "--jit")
+    {
+      jit = std::stoi(value) != 0;
     }
     else
     {
@@ -125,6 +130,7 @@ int main(int argc, char** argv)
       options.threads = threads;
       options.simplify = mode != "full";
       options.sign_only = mode == "sign";
+      options.jit = jit;
       inside = 0;
       start = Clock::now();
       last = frep::sample_grid(tape, grid, options,

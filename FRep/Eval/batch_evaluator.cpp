@@ -2,6 +2,7 @@
 
 #include "Compiler/tape_check.h"
 #include "Eval/block_runner.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
@@ -17,6 +18,20 @@ struct BatchEvaluator::Impl
   std::shared_ptr<ThreadPool> pool;
   int block = 256;
   SimdLevel simd = SimdLevel::Best;
+  bool want_jit = false;
+  bool jit_tried = false;
+  std::shared_ptr<const eval::JitKernel> jit; // shared by the participants (thread-safe)
+
+  /// Compiles the tape once, on first need (compiling costs about as much as interpreting a few
+  /// hundred points, so an evaluator used for a handful of points never pays for it).
+  void ensure_jit()
+  {
+    if (want_jit && !jit_tried)
+    {
+      jit = eval::JitKernel::compile(*tape);
+      jit_tried = true;
+    }
+  }
   std::vector<std::unique_ptr<eval::BlockRunner>> participants; // made on first use, per slot
   std::vector<std::size_t> failures;                            // per slot, of one evaluate()
 };
@@ -37,6 +52,8 @@ BatchEvaluator::BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOpti
   impl_->pool = options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
   impl_->block = options.block_size;
   impl_->simd = options.simd;
+  impl_->want_jit = options.jit && options.simd >= SimdLevel::AVX2 && eval::jit_available() &&
+    eval::jit_supports(*impl_->tape);
   impl_->participants.resize(static_cast<std::size_t>(impl_->pool->size()));
   impl_->failures.resize(impl_->participants.size());
 }
@@ -51,6 +68,12 @@ const Tape& BatchEvaluator::tape() const
 int BatchEvaluator::threads() const
 {
   return impl_->pool->size();
+}
+
+bool BatchEvaluator::compiled() const
+{
+  impl_->ensure_jit();
+  return impl_->jit != nullptr;
 }
 
 std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
@@ -72,14 +95,19 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
   const std::size_t block = static_cast<std::size_t>(im.block);
   const std::size_t blocks = (count + block - 1) / block;
   std::fill(im.failures.begin(), im.failures.end(), 0);
+  constexpr std::size_t kJitMinimumPoints = 512;
+  if (count >= kJitMinimumPoints)
+  {
+    im.ensure_jit();
+  }
   const auto run = [&](std::size_t block_index, int slot)
   {
     std::unique_ptr<eval::BlockRunner>& mine = im.participants[static_cast<std::size_t>(slot)];
     if (!mine)
     {
       mine = std::make_unique<eval::BlockRunner>(im.block, im.simd);
-      mine->bind(im.tape, true); // (checked by the constructor)
     }
+    mine->bind(im.tape, true, im.jit); // (checked by the constructor; the same tape costs nothing)
     const std::size_t base = block_index * block;
     im.failures[static_cast<std::size_t>(slot)] += mine->run(inputs, base,
       static_cast<int>(std::min(block, count - base)), values, errors, attributes);

@@ -36,6 +36,10 @@ struct BatchOptions
   /// The widest kernel build to use: the best the CPU has by default. Every level gives
   /// identical results (no FMA anywhere); lower levels exist for tests and measurements.
   SimdLevel simd = SimdLevel::Best;
+  /// Compile the tape to machine code (the register-resident kernel, Eval/jit_kernel.h) when
+  /// the CPU has AVX2, `simd` is at least AVX2 and every instruction has an exact compiled form;
+  /// otherwise, or when false, the interpreter runs. Both give identical results.
+  bool jit = true;
 };
 
 class BatchEvaluator
@@ -50,6 +54,9 @@ public:
 
   /// Threads that evaluate blocks (the pool's participants, 1 = the caller only).
   int threads() const;
+
+  /// Whether the tape runs as compiled machine code (see BatchOptions::jit).
+  bool compiled() const;
 
   /// Structure-of-arrays evaluation of `count` points: inputs[k][i] is input k of point i
   /// (inputs.size() == tape().input_count). values[i] = F, or NaN where the point raised a

@@ -68,7 +68,8 @@ BlockRunner::BlockRunner(int block, SimdLevel simd)
 
 BlockRunner::~BlockRunner() = default;
 
-void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted)
+void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted,
+  std::shared_ptr<const JitKernel> jit)
 {
   if (!tape)
   {
@@ -76,8 +77,14 @@ void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted)
   }
   if (tape == tape_)
   {
+    jit_ = std::move(jit);
+    if (!jit_ && program_.code.empty() && !tape_->code.empty())
+    {
+      program_ = make_batch_program(*tape_); // it ran machine code until now
+    }
     return;
   }
+  jit_ = std::move(jit);
   bool clear = false;
   if (!trusted)
   {
@@ -90,7 +97,14 @@ void BlockRunner::bind(std::shared_ptr<const Tape> tape, bool trusted)
     }
     clear = checked_reads_unwritten_;
   }
-  program_ = make_batch_program(*tape);
+  if (jit_)
+  {
+    program_ = BatchProgram{}; // the machine code replaces it
+  }
+  else
+  {
+    program_ = make_batch_program(*tape);
+  }
   // 64-byte aligned rows: whole cache lines per register row, aligned vector loads. A slot read
   // before it is written reads 0, so the rows are cleared for a tape that does so; a trusted
   // (simplified) tape never does (it writes such a 0 itself), and then a reused register file
@@ -139,7 +153,14 @@ std::size_t BlockRunner::run(std::span<const double* const> inputs, std::size_t 
   blk.stride = block_;
   blk.inputs = inputs.data();
   blk.base = base;
-  run_block(tape, program_, blk, calls_, simd_);
+  if (jit_)
+  {
+    run_jit(inputs, base, n);
+  }
+  else
+  {
+    run_block(tape, program_, blk, calls_, simd_);
+  }
 
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const std::uint32_t* err = lane_errors_.data();
@@ -187,6 +208,24 @@ std::size_t BlockRunner::run(std::span<const double* const> inputs, std::size_t 
     std::copy(err, err + n, errors + base);
   }
   return failed;
+}
+
+void BlockRunner::run_jit(std::span<const double* const> inputs, std::size_t base, int n)
+{
+  const Tape& tape = *tape_;
+  jit_inputs_.resize(tape.input_count);
+  for (std::size_t k = 0; k < jit_inputs_.size(); ++k)
+  {
+    jit_inputs_[k] = inputs[k] + base;
+  }
+  // The outputs land in their slots' own rows, where run() copies them from.
+  jit_outputs_.resize(tape.outputs.size());
+  for (std::size_t j = 0; j < jit_outputs_.size(); ++j)
+  {
+    jit_outputs_[j] = regs_.get() + static_cast<std::size_t>(tape.outputs[j]) * static_cast<std::size_t>(block_);
+    rows_[tape.outputs[j]] = jit_outputs_[j];
+  }
+  jit_->run(jit_inputs_.data(), jit_outputs_.data(), lane_errors_.data(), static_cast<std::size_t>(n));
 }
 
 std::size_t BlockRunner::evaluate(std::span<const double* const> inputs, std::size_t count,

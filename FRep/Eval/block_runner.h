@@ -9,6 +9,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/batch_kernel.h"
 #include "Eval/batch_program.h"
+#include "Eval/jit_kernel.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -29,8 +30,11 @@ public:
   BlockRunner& operator=(const BlockRunner&) = delete;
 
   /// Evaluates `tape` from now on (checked unless `trusted`: a tape the engine made itself, such
-  /// as a simplified one). Keeps the buffers; rebinding the same tape costs nothing.
-  void bind(std::shared_ptr<const Tape> tape, bool trusted = false);
+  /// as a simplified one). Keeps the buffers; rebinding the same tape costs nothing. `jit`: the
+  /// tape compiled to machine code (JitKernel::compile of the same tape), run instead of the
+  /// interpreter; null for the interpreter.
+  void bind(std::shared_ptr<const Tape> tape, bool trusted = false,
+    std::shared_ptr<const JitKernel> jit = nullptr);
   const Tape& tape() const { return *tape_; }
   int block() const { return block_; }
 
@@ -45,6 +49,8 @@ public:
     std::uint32_t* errors, std::span<double* const> attributes);
 
 private:
+  void run_jit(std::span<const double* const> inputs, std::size_t base, int n);
+
   struct AlignedFree
   {
     void operator()(double* p) const;
@@ -56,6 +62,9 @@ private:
   std::shared_ptr<const Tape> checked_; // the last untrusted tape bound, checked
   bool checked_reads_unwritten_ = false; // ... and whether it reads a slot before writing it
   BatchProgram program_;
+  std::shared_ptr<const JitKernel> jit_;
+  std::vector<const double*> jit_inputs_;
+  std::vector<double*> jit_outputs_;
   std::unique_ptr<double[], AlignedFree> regs_;
   std::size_t reg_capacity_ = 0; // doubles
   std::vector<const double*> rows_;

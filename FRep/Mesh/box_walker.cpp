@@ -24,6 +24,7 @@ void BoxWalker::Level::rebind(std::shared_ptr<const Tape> t)
   interval.rebind(tape, true);
   choices.resize(tape->code.size());
   simplifiable = may_simplify(*tape);
+  kernel.reset();
 }
 
 BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
@@ -136,7 +137,9 @@ void BoxWalker::sample(const CellBox& box, Level& level)
   }
   const std::array<const double*, 3> inputs{ xs_.data(), ys_.data(), zs_.data() };
   Piece& piece = builder_.piece();
-  runner_->bind(level.tape, &level != &root_); // (the root's tape is checked once)
+  // (the root's tape is checked once)
+  runner_->bind(level.tape, &level != &root_,
+    options_.jit ? level.kernel.get(*level.tape, count) : nullptr);
   piece.sample_instructions += count * level.tape->code.size();
   piece.failed_samples += runner_->evaluate(
     std::span<const double* const>(inputs.data(), static_cast<std::size_t>(frame_.dimension)),

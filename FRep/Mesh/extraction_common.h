@@ -5,6 +5,7 @@
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/tape_simplifier.h"
 #include "Mesh/surface.h"
 
@@ -205,6 +206,7 @@ private:
     IntervalEvaluator interval;
     std::vector<Choice> choices;
     bool simplifiable = false; // may_simplify(*tape)
+    eval::LazyKernel kernel;   // the tape compiled, once its samples pay for it
 
     explicit Level(std::shared_ptr<const Tape> t);
     void rebind(std::shared_ptr<const Tape> t); // a simplified tape (trusted)

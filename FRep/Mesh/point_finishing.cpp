@@ -209,12 +209,13 @@ bool needs_difference_normal(std::uint64_t key)
 
 /// Every point with the full tape, in chunks spread over the pool by the batch evaluator.
 void full_tape_normals(const std::shared_ptr<const Tape>& tape, const std::vector<std::uint64_t>& keys,
-  const std::shared_ptr<ThreadPool>& pool, const std::array<double, 3>& h, Surface& surface,
-  std::vector<unsigned char>& missing)
+  const ExtractOptions& options, const std::shared_ptr<ThreadPool>& pool,
+  const std::array<double, 3>& h, Surface& surface, std::vector<unsigned char>& missing)
 {
   const std::size_t count = surface.point_count();
   BatchOptions batch_options;
   batch_options.pool = pool;
+  batch_options.jit = options.jit;
   BatchEvaluator batch(tape, batch_options);
   constexpr std::size_t chunk = 1 << 15;
   std::array<std::vector<double>, 3> in;
@@ -324,10 +325,12 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     std::unique_ptr<BatchEvaluator> full;
     std::array<std::vector<double>, 3> in;
     std::vector<double> values;
+    bool jit = true;
 
-    explicit Participant(const std::shared_ptr<const Tape>& tape)
+    Participant(const std::shared_ptr<const Tape>& tape, bool jit_wanted)
       : interval(tape)
       , choices(tape->code.size())
+      , jit(jit_wanted)
     {
       full = std::make_unique<BatchEvaluator>(tape, options());
     }
@@ -335,6 +338,7 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     {
       BatchOptions o;
       o.pool = caller_only;
+      o.jit = jit;
       return o;
     }
   };
@@ -354,7 +358,7 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
       auto& mine = participants[static_cast<std::size_t>(slot)];
       if (!mine)
       {
-        mine = std::make_unique<Participant>(tape);
+        mine = std::make_unique<Participant>(tape, options.jit);
       }
       Participant& pt = *mine;
       const std::size_t begin = super_begin[g], end = super_begin[g + 1];
@@ -410,7 +414,7 @@ void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame
   }
   else
   {
-    full_tape_normals(tape, keys, pool, h, surface, missing);
+    full_tape_normals(tape, keys, options, pool, h, surface, missing);
   }
 }
 
@@ -482,7 +486,8 @@ void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
   if (options.attributes && attribute_count > 0 && count > 0)
   {
     BatchOptions batch_options;
-    batch_options.pool = pool;
+      batch_options.pool = pool;
+    batch_options.jit = options.jit;
     BatchEvaluator batch(tape, batch_options);
     std::vector<double> xyz[3];
     for (int a = 0; a < dim; ++a)

@@ -54,6 +54,9 @@ struct ExtractOptions
   /// checks the box decides). The samples' values are the full tape's bit for bit, so the surface
   /// is identical either way; off is for tests and measurements. Needs `cull`.
   bool simplify = true;
+  /// Run the tapes as compiled machine code once they have enough samples to pay for it
+  /// (BatchOptions::jit, Eval/jit_kernel.h). Identical results; off for tests and measurements.
+  bool jit = true;
   /// Cells per axis of the smallest box the culling tests before sampling it.
   int leaf_cells = 8;
   /// Refuse grids with more samples than this (the time would be unbounded) with an error;

@@ -199,6 +199,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
       options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
     BatchOptions batch_options;
     batch_options.pool = pool;
+    batch_options.jit = options.jit;
     BatchEvaluator batch(tape, batch_options);
     result.threads = batch.threads();
     // Tile by tile with tapes simplified per tile, when the tape has anything a box can decide.
@@ -208,6 +209,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
       sample::TileOptions tiles;
       tiles.sign_only = options.sign_only;
       tiles.iso = options.iso;
+      tiles.jit = options.jit;
       tiled = std::make_unique<sample::TiledEvaluator>(tape, pool, tiles);
     }
     std::vector<sample::SampleRun> runs;

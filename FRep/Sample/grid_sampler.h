@@ -72,6 +72,9 @@ struct SampleOptions
   /// min/max, selects and checks the box decides). The values are the same bit for bit; off is
   /// for tests and measurements.
   bool simplify = true;
+  /// Run the tapes as compiled machine code once they have enough samples to pay for it
+  /// (BatchOptions::jit, Eval/jit_kernel.h). Identical results; off for tests and measurements.
+  bool jit = true;
   /// Only the side of `iso` matters (sign images, inside/outside counts): a tile whose interval
   /// enclosure lies wholly at or above iso, or wholly below it, with no run-time error or NaN
   /// possible, is not evaluated, and its samples get that bound of F (the enclosure's lo >= iso,

@@ -1,6 +1,7 @@
 #include "Sample/tiled_evaluation.h"
 
 #include "Eval/block_runner.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
@@ -98,6 +99,8 @@ struct TiledEvaluator::Worker
   std::unique_ptr<IntervalEvaluator> block_interval;
   std::vector<std::unique_ptr<IntervalEvaluator>> intervals; // per depth of the walk
   eval::BlockRunner runner;
+  eval::LazyKernel kernel; // of the runner's tape
+  std::shared_ptr<const Tape> kernel_tape;
   std::vector<std::vector<Choice>> choices; // per depth of the recursion
   std::vector<std::vector<double>> in;
   std::vector<const double*> in_rows;
@@ -231,6 +234,7 @@ TiledEvaluator::TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr
   , tile_(std::max(1, options.tile))
   , sign_only_(options.sign_only)
   , iso_(options.iso)
+  , jit_(options.jit)
   , block_interval_(tape_)
   , block_choices_(tape_->code.size())
   , top_(std::make_unique<Worker>())
@@ -314,6 +318,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     std::size_t task_samples;
     bool sign_only;
     double iso;
+    bool jit;
     const Tape* original; // the evaluator's own tape (checked); the others are simplified ones
 
     /// With sign_only, fills the rectangle with the bound when the box's enclosure decides it.
@@ -384,7 +389,13 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         return;
       }
       const std::shared_ptr<const Tape> leaf_tape = better(w.simplifier.simplify(*tape, choices), tape);
-      w.runner.bind(leaf_tape, leaf_tape.get() != original);
+      if (w.kernel_tape != leaf_tape)
+      {
+        w.kernel.reset();
+        w.kernel_tape = leaf_tape;
+      }
+      w.runner.bind(leaf_tape, leaf_tape.get() != original,
+        jit ? w.kernel.get(*leaf_tape, n) : nullptr);
       w.failures += w.runner.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
         std::span<double* const>(w.attribute_rows));
       w.instructions += n * leaf_tape->code.size();
@@ -455,7 +466,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
   const Rectangle whole{ 0, runs.size(), column_lo, column_hi };
   {
     Walk top{ runs, coordinates, leaf_samples, tile, values, errors, attributes, *top_, &tasks,
-      task_samples, sign_only_, iso_, tape_.get() };
+      task_samples, sign_only_, iso_, jit_, tape_.get() };
     top_->size_buffers(dimension, leaf_samples, attributes.size());
     if (top.samples_in(whole) <= task_samples)
     {
@@ -481,7 +492,7 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         bound_interval(w.block_interval, tasks[t].tape, tasks[t].tape != tape_);
       w.size_buffers(dimension, leaf_samples, attributes.size());
       Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0,
-        sign_only_, iso_, tape_.get() };
+        sign_only_, iso_, jit_, tape_.get() };
       walk.node(tasks[t].rectangle, tasks[t].tape, task_interval, 0);
     });
   std::size_t failures = top_->failures;

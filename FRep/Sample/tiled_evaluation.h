@@ -47,6 +47,7 @@ struct TileOptions
   /// evaluated; its samples get that bound (lo >= iso, or hi < iso) instead of F.
   bool sign_only = false;
   double iso = 0.0;
+  bool jit = true; ///< SampleOptions::jit
 };
 
 class TiledEvaluator
@@ -77,6 +78,7 @@ private:
   int tile_;
   bool sign_only_;
   double iso_;
+  bool jit_;
   IntervalEvaluator block_interval_;
   TapeSimplifier block_simplifier_;
   std::vector<Choice> block_choices_;

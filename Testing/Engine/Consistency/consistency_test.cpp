@@ -16,6 +16,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/tape_simplifier.h"
 #include "Language/parser.h"
@@ -149,6 +150,7 @@ TEST(Consistency, BatchEqualsPointBitForBit)
 {
   std::mt19937_64 rng(7);
   std::size_t compared = 0;
+  std::size_t compiled_subjects = 0;
   for (const Subject& s : cached_subjects())
   {
     const std::vector<std::vector<double>> points = probe_points(s, 300, rng);
@@ -183,21 +185,28 @@ TEST(Consistency, BatchEqualsPointBitForBit)
     }
     for (const int threads : { 1, 2 })
     {
-      for (const frep::SimdLevel simd :
-        { frep::SimdLevel::Baseline, frep::SimdLevel::AVX2, frep::SimdLevel::AVX512 })
+      // the interpreter at each SIMD level, then the compiled kernel (where the tape has one)
+      for (const auto& [simd, jit] : { std::pair{ frep::SimdLevel::Baseline, false },
+             std::pair{ frep::SimdLevel::AVX2, false }, std::pair{ frep::SimdLevel::AVX512, false },
+             std::pair{ frep::SimdLevel::Best, true } })
       {
         frep::BatchOptions options;
         options.threads = threads;
         options.simd = simd;
-        options.block_size = 64;
+        options.jit = jit;
+        options.block_size = 61; // not a multiple of the kernel's 8 lanes: partial chunks too
         frep::BatchEvaluator batch(s.tape, options);
+        ASSERT_EQ(batch.compiled(), jit && frep::eval::jit_available() && frep::eval::jit_supports(*s.tape))
+          << s.id;
+        compiled_subjects += batch.compiled() && threads == 1 ? 1 : 0;
         std::vector<double> values(points.size());
         std::vector<std::uint32_t> errors(points.size());
         batch.evaluate(inputs, points.size(), values.data(), errors.data());
         for (std::size_t i = 0; i < points.size(); ++i)
         {
           ASSERT_TRUE(same_bits(values[i], expected_value[i]))
-            << s.id << " point " << i << " threads " << threads << " simd " << static_cast<int>(simd) << ": batch "
+            << s.id << " point " << i << " threads " << threads << " simd " << static_cast<int>(simd)
+            << " jit " << jit << ": batch "
             << values[i] << " point " << expected_value[i];
           ASSERT_EQ(errors[i], expected_error[i]) << s.id << " point " << i;
         }
@@ -205,7 +214,13 @@ TEST(Consistency, BatchEqualsPointBitForBit)
       }
     }
   }
-  std::printf("[consistency] %zu batch values compared with the point evaluator\n", compared);
+  std::printf("[consistency] %zu batch values compared with the point evaluator; %zu of %zu tapes "
+              "compiled to machine code\n",
+    compared, compiled_subjects, cached_subjects().size());
+  if (frep::eval::jit_available())
+  {
+    EXPECT_GT(compiled_subjects, cached_subjects().size() / 3); // the kernel is really exercised
+  }
 }
 
 TEST(Consistency, IntervalsEncloseSampledValues)

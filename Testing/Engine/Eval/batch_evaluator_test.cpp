@@ -1,4 +1,5 @@
 #include "Eval/batch_evaluator.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/thread_pool.h"
 
@@ -100,8 +101,12 @@ std::vector<BatchOptions> option_sets()
       BatchOptions o;
       o.threads = threads;
       o.simd = simd;
+      o.jit = false;
       sets.push_back(o);
     }
+    BatchOptions compiled; // the machine-code kernel where the CPU and the tape allow it
+    compiled.threads = threads;
+    sets.push_back(compiled);
   }
   BatchOptions odd;
   odd.threads = 2;
@@ -113,7 +118,7 @@ std::vector<BatchOptions> option_sets()
 std::string describe(const BatchOptions& o)
 {
   return "threads=" + std::to_string(o.threads) + " block=" + std::to_string(o.block_size) +
-         " simd=" + std::to_string(static_cast<int>(o.simd));
+         " simd=" + std::to_string(static_cast<int>(o.simd)) + " jit=" + std::to_string(o.jit);
 }
 
 TEST(BatchEvaluator, EveryOpcodeEqualsPointBitForBit)
@@ -189,6 +194,68 @@ TEST(BatchEvaluator, ErrorsAttributesAndCallsEqualPoint)
   {
     expect_batch_equals_point(tape, pts, o, "model " + describe(o));
   }
+}
+
+// The compiled kernel: more live values than registers (a stack frame), errors, a select, a
+// slot read before it is written, and outputs that are inputs, against the point evaluator.
+TEST(BatchEvaluator, CompiledKernelSpillsErrorsAndUnwrittenSlots)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0);
+  const auto y = b.input(1);
+  const auto z = b.input(2);
+  std::vector<std::uint32_t> live;
+  for (int i = 0; i < 90; ++i) // 90 values live at once: most of them in the frame
+  {
+    const auto t = b.op(i % 3 == 0 ? Opcode::Union : (i % 3 == 1 ? Opcode::Max : Opcode::Intersect),
+      b.op(Opcode::Mul, x, b.constant(0.25 * i - 7)), i % 2 ? y : z);
+    live.push_back(t);
+  }
+  const auto unwritten = b.tape.slot_count++; // read before anything writes it: 0
+  auto sum = b.op(Opcode::Add, live[0], unwritten);
+  for (std::size_t i = 1; i < live.size(); ++i)
+  {
+    sum = b.op(i % 2 ? Opcode::Sub : Opcode::Add, sum, live[i]);
+  }
+  b.error_if(b.op(Opcode::Gt, sum, b.constant(1e3)));
+  const auto chosen = b.op(Opcode::Select, b.op(Opcode::Lt, x, y), sum, b.op(Opcode::Neg, sum));
+  b.error_if(b.op(Opcode::Ne, chosen, chosen)); // NaN-ness is not an error here: |NaN - NaN| < eps is false
+  const auto tape = b.finish({ chosen, x, live[40] });
+  BatchOptions options;
+  options.threads = 1;
+  EXPECT_EQ(BatchEvaluator(tape, options).compiled(), eval::jit_available());
+  const auto kernel = eval::JitKernel::compile(*tape);
+  if (kernel)
+  {
+    EXPECT_GT(kernel->spilled_slots(), 70u);
+  }
+  const Points pts(3, 4099, 21);
+  for (const BatchOptions& o : option_sets())
+  {
+    expect_batch_equals_point(tape, pts, o, "spills " + describe(o));
+  }
+}
+
+// Every instruction but opaque calls compiles (libm and the HyperFun rules through a call out
+// per chunk); a tape with a Call, or a SIMD level below AVX2, runs on the interpreter.
+TEST(BatchEvaluator, CompiledKernelForEveryInstructionButCalls)
+{
+  for (const OpInfo& info : value_ops())
+  {
+    EXPECT_TRUE(eval::jit_supports(*single_op_tape(info.op))) << info.name;
+  }
+  EXPECT_TRUE(eval::jit_supports(*single_op_tape(Opcode::HfPowInt, -16)));
+  EXPECT_TRUE(eval::jit_supports(*single_op_tape(Opcode::HfPowInt, 17)));
+  EXPECT_FALSE(eval::jit_supports(*model_tape(std::make_shared<TestFunction>()))); // a Call
+  BatchOptions options;
+  options.threads = 1;
+  EXPECT_EQ(BatchEvaluator(single_op_tape(Opcode::Exp), options).compiled(), eval::jit_available());
+  EXPECT_FALSE(BatchEvaluator(model_tape(std::make_shared<TestFunction>()), options).compiled());
+  options.simd = SimdLevel::Baseline;
+  EXPECT_FALSE(BatchEvaluator(single_op_tape(Opcode::Add), options).compiled());
+  options.simd = SimdLevel::Best;
+  options.jit = false;
+  EXPECT_FALSE(BatchEvaluator(single_op_tape(Opcode::Add), options).compiled());
 }
 
 TEST(BatchEvaluator, ScratchIsPerThreadNotPerPoint)

@@ -225,6 +225,8 @@ std::pair<double, double> expect_simplification_changes_nothing(
   simplified.threads = 2;
   ExtractOptions full = simplified;
   full.simplify = false;
+  full.jit = false; // the reference: full tapes on the interpreter; the other: compiled leaves
+
   const ExtractResult a = extract_surface(tape, grid, simplified);
   const ExtractResult b = extract_surface(tape, grid, full);
   EXPECT_TRUE(a.ok() && b.ok()) << what << ": " << a.error << b.error;

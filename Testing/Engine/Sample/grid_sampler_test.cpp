@@ -271,8 +271,10 @@ std::pair<std::size_t, std::size_t> expect_simplification_changes_nothing(
   const std::shared_ptr<const Tape>& tape, const GridSpec& grid, SampleOptions options)
 {
   options.simplify = true;
+  options.jit = true;
   const Stored a = sample(tape, grid, options);
   options.simplify = false;
+  options.jit = false; // the reference: the full tape on the interpreter
   const Stored b = sample(tape, grid, options);
   EXPECT_TRUE(a.result.ok() && b.result.ok()) << a.result.error << b.result.error;
   const auto bits = [](const std::vector<double>& v)

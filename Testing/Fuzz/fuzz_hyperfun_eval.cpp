@@ -148,6 +148,7 @@ void check_object(const std::shared_ptr<const frep::ast::Program>& program, int 
   }
   frep::BatchOptions batch_options;
   batch_options.threads = 1;
+  batch_options.jit = false; // the interpreter; the compiled kernel is compared with it below
   frep::BatchEvaluator batch(tape, batch_options);
   const std::size_t failed =
     batch.evaluate(inputs, kPoints, values.data(), errors.data(), attribute_columns);
@@ -164,6 +165,20 @@ void check_object(const std::shared_ptr<const frep::ast::Program>& program, int 
     for (std::size_t j = 0; j + 1 < outputs; ++j)
     {
       FUZZ_CHECK(same(attributes[j][i], point_outputs[i][j + 1]), "batch s[] == point s[]");
+    }
+  }
+  // The compiled kernel (made now; else only from 1024 samples) == the interpreter above.
+  batch_options.jit = true;
+  frep::BatchEvaluator machine_code(tape, batch_options);
+  if (machine_code.compiled())
+  {
+    std::vector<double> compiled_values(kPoints);
+    std::vector<std::uint32_t> compiled_errors(kPoints);
+    machine_code.evaluate(inputs, kPoints, compiled_values.data(), compiled_errors.data());
+    for (std::size_t i = 0; i < kPoints; ++i)
+    {
+      FUZZ_CHECK(compiled_errors[i] == errors[i], "compiled error id == interpreted error id");
+      FUZZ_CHECK(same(compiled_values[i], values[i]), "compiled F == interpreted F bit for bit");
     }
   }
   if (outputs == 0)

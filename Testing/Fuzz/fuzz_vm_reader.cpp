@@ -80,6 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   frep::BatchOptions one;
   one.threads = 1;
   frep::BatchEvaluator batch(tape, one);
+  batch.compiled(); // compile now (else only from 1024 samples): the machine code is checked too
   std::vector<double> batch_values(count);
   std::vector<std::uint32_t> batch_errors(count);
   batch.evaluate(inputs, count, batch_values.data(), batch_errors.data());

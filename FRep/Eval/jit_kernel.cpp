@@ -284,8 +284,8 @@ void TapeCompiler::assign_registers()
   // compiler's allocator, so a slot's uses span its successive values).
   std::vector<std::uint32_t> order(slots);
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(),
-    [&](std::uint32_t x, std::uint32_t y) { return uses[x] > uses[y]; });
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y)
+    { return uses[x] != uses[y] ? uses[x] > uses[y] : x < y; }); // (no temporary buffer)
   reg_.assign(slots, -1);
   frame_.assign(slots, -1);
   int next = 0;

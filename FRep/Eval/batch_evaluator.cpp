@@ -53,7 +53,7 @@ BatchEvaluator::BatchEvaluator(std::shared_ptr<const Tape> tape, const BatchOpti
   impl_->block = options.block_size;
   impl_->simd = options.simd;
   impl_->want_jit = options.jit && options.simd >= SimdLevel::AVX2 && eval::jit_available() &&
-    eval::jit_supports(*impl_->tape);
+    eval::jit_supports(*impl_->tape) && eval::jit_pays(*impl_->tape);
   impl_->participants.resize(static_cast<std::size_t>(impl_->pool->size()));
   impl_->failures.resize(impl_->participants.size());
 }

@@ -31,6 +31,10 @@ bool jit_available();
 /// Whether `tape` can be compiled: it has no opaque Call (see the header comment).
 bool jit_supports(const Tape& tape);
 
+/// Whether compiling `tape` pays: not when calls out (libm, HyperFun's pow and mod) are most of
+/// its estimated work. The users of the kernel (BatchEvaluator, LazyKernel) ask this.
+bool jit_pays(const Tape& tape);
+
 class JitKernel
 {
 public:

@@ -1,6 +1,7 @@
 #include "Eval/jit_kernel.h"
 
 #include "Compiler/op_eval.h"
+#include "Eval/batch_kernel.h"
 #include "Eval/x86_emitter.h"
 #include "Semantics/op_semantics.h"
 
@@ -69,43 +70,6 @@ enum FixedConstant : int
   kZero
 };
 
-bool has_jit_form(const Instruction& ins)
-{
-  return ins.op != Opcode::Call; // an opaque function may keep state per evaluator
-}
-
-/// Whether the instruction is compiled to vector code (else: a call out per chunk).
-bool is_native(const Instruction& ins)
-{
-  switch (ins.op)
-  {
-    case Opcode::HfPowInt:
-      return ins.index >= -kMaxPower && ins.index <= kMaxPower;
-    case Opcode::Exp:
-    case Opcode::Log:
-    case Opcode::Log10:
-    case Opcode::Sin:
-    case Opcode::Cos:
-    case Opcode::Tan:
-    case Opcode::Asin:
-    case Opcode::Acos:
-    case Opcode::Atan:
-    case Opcode::Sinh:
-    case Opcode::Cosh:
-    case Opcode::Tanh:
-    case Opcode::Atan2:
-    case Opcode::Pow:
-    case Opcode::Frac:
-    case Opcode::Fmod:
-    case Opcode::HfPow:
-    case Opcode::HfMod:
-    case Opcode::HfRound:
-      return false;
-    default:
-      return true;
-  }
-}
-
 /// The call out: one chunk of an instruction without vector form, by the scalar definition the
 /// point evaluator uses (the same libm calls, so the same bits), one instance per opcode.
 template<Opcode Op>
@@ -149,6 +113,37 @@ ScalarChunk scalar_chunk_of(Opcode op)
 #undef FREP_CHUNK
     default:
       return nullptr;
+  }
+}
+
+/// Whether the instruction is compiled to vector code (else: a call out per chunk).
+bool is_native(const Instruction& ins)
+{
+  if (ins.op == Opcode::HfPowInt)
+  {
+    return ins.index >= -kMaxPower && ins.index <= kMaxPower;
+  }
+  return scalar_chunk_of(ins.op) == nullptr;
+}
+
+/// The vector instruction of a binary arithmetic opcode. vmaxpd is src1 > src2 ? src1 : src2 and
+/// vminpd src1 < src2 ? src1 : src2: exactly hf_max and hf_min, NaN and signed zeros included.
+PdOp binary_pd(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Add:
+      return PdOp::Add;
+    case Opcode::Sub:
+      return PdOp::Sub;
+    case Opcode::Mul:
+      return PdOp::Mul;
+    case Opcode::Div:
+      return PdOp::Div;
+    case Opcode::Max:
+      return PdOp::Max;
+    default:
+      return PdOp::Min;
   }
 }
 
@@ -351,7 +346,8 @@ void TapeCompiler::assign_registers()
 }
 
 // Backward: the slots read after each call out, or by the instruction itself (its other chunks
-// run after the first one's call), as a mask of the registers that hold them.
+// run after the first one's call), and its own result (the first chunk's, while the second
+// calls out), as a mask of the registers that hold them.
 void TapeCompiler::find_live_registers()
 {
   live_at_call_.assign(tape_.code.size(), 0);
@@ -375,7 +371,8 @@ void TapeCompiler::find_live_registers()
     }
     if (ins.op != Opcode::ErrorIf && !is_native(ins))
     {
-      std::uint32_t mask = 0;
+      // With two chunks the first chunk's result is in its register when the second calls out.
+      std::uint32_t mask = reg_[ins.out] >= 0 ? 1u << reg_[ins.out] : 0u;
       for (std::size_t s = 0; s < live.size(); ++s)
       {
         if (live[s] && reg_[s] >= 0)
@@ -557,22 +554,12 @@ void TapeCompiler::instruction(std::size_t k)
       e.vmovupd_load(dst, x86::ptr(Gp::rax, kLane, 8, chunk_ * kVector));
       break;
     case Opcode::Add:
-      arithmetic(PdOp::Add, dst, a(kT4), operand(1));
-      break;
     case Opcode::Sub:
-      arithmetic(PdOp::Sub, dst, a(kT4), operand(1));
-      break;
     case Opcode::Mul:
-      arithmetic(PdOp::Mul, dst, a(kT4), operand(1));
-      break;
     case Opcode::Div:
-      arithmetic(PdOp::Div, dst, a(kT4), operand(1));
-      break;
-    case Opcode::Max: // vmaxpd: src1 > src2 ? src1 : src2, exactly hf_max (NaN, signed zeros)
-      arithmetic(PdOp::Max, dst, a(kT4), operand(1));
-      break;
-    case Opcode::Min: // vminpd: src1 < src2 ? src1 : src2, exactly hf_min
-      arithmetic(PdOp::Min, dst, a(kT4), operand(1));
+    case Opcode::Max:
+    case Opcode::Min:
+      arithmetic(binary_pd(ins.op), dst, a(kT4), operand(1));
       break;
     case Opcode::Neg:
       arithmetic(PdOp::Xor, dst, a(kT4), fixed(kSignMask));
@@ -812,12 +799,7 @@ bool TapeCompiler::compile(x86::Emitter& e, int chunks, std::size_t& spilled)
 bool jit_available()
 {
 #if defined(FREP_JIT_X86_64)
-  static const bool has = []
-  {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return has;
+  return cpu_has_avx2(); // the interpreter's own CPU check
 #else
   return false;
 #endif
@@ -834,8 +816,7 @@ bool jit_pays(const Tape& tape)
 
 bool jit_supports(const Tape& tape)
 {
-  return tape.calls.empty() &&
-    std::all_of(tape.code.begin(), tape.code.end(), [](const Instruction& ins) { return has_jit_form(ins); });
+  return tape.calls.empty(); // an opaque function may keep state per evaluator
 }
 
 std::shared_ptr<const JitKernel> JitKernel::compile(const Tape& tape)

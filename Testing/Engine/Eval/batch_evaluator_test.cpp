@@ -286,6 +286,36 @@ TEST(BatchEvaluator, CompiledKernelRunsEveryOpcodeLikeThePointEvaluator)
   }
 }
 
+// A latency-bound tape (a chain of R-unions) runs two chunks per pass; calls out between them must
+// keep both chunks' values, the result of the first chunk's copy included.
+TEST(BatchEvaluator, CompiledKernelCallsOutInTwoChunkPasses)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0);
+  const auto y = b.input(1);
+  const auto z = b.input(2);
+  auto u = b.op(Opcode::Tanh, x);
+  const auto side = b.op(Opcode::HfPowInt, y, 0, 0, 24); // a call out, read at the end
+  for (int i = 0; i < 30; ++i)
+  {
+    u = b.op(i % 2 ? Opcode::Union : Opcode::Intersect, u, i % 3 ? z : y);
+  }
+  u = b.op(Opcode::Atan, u); // a call out in the chain
+  const auto tape = b.finish({ b.op(Opcode::Add, u, side) });
+  const auto kernel = eval::JitKernel::compile(*tape);
+  if (!kernel)
+  {
+    GTEST_SKIP() << "no AVX2: the kernel cannot run here";
+  }
+  EXPECT_EQ(kernel->lanes(), 8u);
+  EXPECT_TRUE(eval::jit_pays(*tape));
+  const Points pts(3, 1003, 41);
+  for (const BatchOptions& o : option_sets())
+  {
+    expect_batch_equals_point(tape, pts, o, "two chunks " + describe(o));
+  }
+}
+
 TEST(BatchEvaluator, ScratchIsPerThreadNotPerPoint)
 {
   auto fn = std::make_shared<TestFunction>();

@@ -2,6 +2,7 @@
 
 #include "Compiler/op_eval.h"
 #include "Eval/batch_kernel.h"
+#include "Eval/code_memory.h"
 #include "Eval/x86_emitter.h"
 #include "Semantics/op_semantics.h"
 
@@ -12,8 +13,6 @@
 
 #if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__)
 #define FREP_JIT_X86_64 1
-#include <sys/mman.h>
-#include <unistd.h>
 #endif
 
 namespace frep::eval
@@ -821,6 +820,13 @@ bool jit_supports(const Tape& tape)
 
 std::shared_ptr<const JitKernel> JitKernel::compile(const Tape& tape)
 {
+  std::shared_ptr<CodeMemory> memory;
+  return compile(tape, memory);
+}
+
+std::shared_ptr<const JitKernel> JitKernel::compile(const Tape& tape,
+  std::shared_ptr<CodeMemory>& memory)
+{
 #if defined(FREP_JIT_X86_64)
   if (!jit_available() || !jit_supports(tape))
   {
@@ -842,41 +848,29 @@ std::shared_ptr<const JitKernel> JitKernel::compile(const Tape& tape)
     return nullptr;
   }
   const std::vector<std::uint8_t>& code = emitter.code();
-  const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-  const std::size_t size = (code.size() + page - 1) / page * page;
-  void* memory = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (memory == MAP_FAILED)
+  // (use_count 1: only the caller holds it, so no kernel runs from it any more)
+  if (!memory || memory.use_count() != 1 || memory->capacity() < code.size())
   {
-    return nullptr;
+    memory = CodeMemory::make(code.size());
   }
-  std::memcpy(memory, code.data(), code.size());
-  if (mprotect(memory, size, PROT_READ | PROT_EXEC) != 0)
+  if (!memory || !memory->load(code))
   {
-    munmap(memory, size);
     return nullptr;
   }
   kernel->inputs_ = tape.input_count;
   kernel->outputs_ = tape.outputs.size();
   kernel->memory_ = memory;
-  kernel->mapped_ = size;
   kernel->code_size_ = code.size();
-  kernel->function_ = reinterpret_cast<Function>(memory);
+  kernel->function_ = reinterpret_cast<Function>(const_cast<void*>(memory->entry()));
   return kernel;
 #else
   (void)tape;
+  (void)memory;
   return nullptr;
 #endif
 }
 
-JitKernel::~JitKernel()
-{
-#if defined(FREP_JIT_X86_64)
-  if (memory_ != nullptr)
-  {
-    munmap(memory_, mapped_);
-  }
-#endif
-}
+JitKernel::~JitKernel() = default;
 
 void JitKernel::run(const double* const* inputs, double* const* outputs, std::uint32_t* errors,
   std::size_t n) const
@@ -919,7 +913,7 @@ void JitKernel::run(const double* const* inputs, double* const* outputs, std::ui
 
 void LazyKernel::reset()
 {
-  kernel_.reset();
+  kernel_.reset(); // (its memory is reused by the next kernel once nothing else holds it)
   samples_ = 0;
   tried_ = false;
 }
@@ -932,7 +926,10 @@ const std::shared_ptr<const JitKernel>& LazyKernel::get(const Tape& tape, std::s
     tried_ = true;
     if (jit_pays(tape))
     {
-      kernel_ = JitKernel::compile(tape);
+      // Whichever memory only this object holds now (the other may be a runner's old kernel's).
+      std::shared_ptr<CodeMemory>& memory =
+        memory_[0] && memory_[0].use_count() != 1 ? memory_[1] : memory_[0];
+      kernel_ = JitKernel::compile(tape, memory);
     }
   }
   return kernel_;

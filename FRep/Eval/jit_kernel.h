@@ -25,6 +25,8 @@
 namespace frep::eval
 {
 
+class CodeMemory;
+
 /// Whether this machine runs JIT kernels: x86-64 Linux with AVX2.
 bool jit_available();
 
@@ -41,6 +43,11 @@ public:
   /// Compiles `tape` (a checked one: slots and operands in range). Null when !jit_available(),
   /// !jit_supports(tape), or its spill frame would be too large for a thread's stack.
   static std::shared_ptr<const JitKernel> compile(const Tape& tape);
+  /// The same, with the code in `memory` when it is large enough and no other kernel uses it
+  /// (only the caller holds it), else in a new CodeMemory that the caller should keep for next
+  /// time: `memory` is replaced by the one the kernel uses.
+  static std::shared_ptr<const JitKernel> compile(const Tape& tape,
+    std::shared_ptr<CodeMemory>& memory);
 
   ~JitKernel();
   JitKernel(const JitKernel&) = delete;
@@ -64,8 +71,7 @@ private:
   using Function = void (*)(const double* const*, double* const*, std::uint32_t*, std::size_t,
     const double*);
 
-  void* memory_ = nullptr;
-  std::size_t mapped_ = 0;
+  std::shared_ptr<CodeMemory> memory_; // shared with the LazyKernel that may reuse it
   std::size_t code_size_ = 0;
   std::size_t spilled_ = 0;
   std::size_t inputs_ = 0;
@@ -93,6 +99,9 @@ public:
 
 private:
   std::shared_ptr<const JitKernel> kernel_;
+  // Executable memory reused from one tape's kernel to the next (a runner's previous kernel may
+  // still be bound while the next one compiles: two suffice, each reused once nothing holds it).
+  std::shared_ptr<CodeMemory> memory_[2];
   std::size_t samples_ = 0;
   bool tried_ = false;
 };

@@ -711,6 +711,7 @@ void IntervalEvaluator::rebind(std::shared_ptr<const Tape> tape, bool trusted)
   }
   tape_ = std::move(tape);
   prepare(false);
+  producers_.clear();
 }
 
 IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box)
@@ -728,7 +729,29 @@ IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box, std::s
   return run(box, choices.data());
 }
 
-IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* choices)
+IntervalResult IntervalEvaluator::evaluate(std::span<const Interval> box,
+  std::span<Choice> choices, const IntervalFreeze* outer, IntervalFreeze* inner)
+{
+  const std::size_t n = tape_->code.size();
+  if (!choices.empty() && choices.size() != n)
+  {
+    throw std::invalid_argument("IntervalEvaluator::evaluate: one choice per instruction expected");
+  }
+  if (outer && outer->action.size() != n)
+  {
+    throw std::invalid_argument("IntervalEvaluator::evaluate: the freeze is of another tape");
+  }
+  std::fill(choices.begin(), choices.end(), Choice::Keep);
+  if (inner)
+  {
+    inner->value.resize(n);
+    inner->nan.resize(n);
+  }
+  return run(box, choices.empty() ? nullptr : choices.data(), outer, inner);
+}
+
+IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* choices,
+  const IntervalFreeze* outer, IntervalFreeze* inner)
 {
   const Tape& tape = *tape_;
   if (box.size() < tape.input_count)
@@ -771,6 +794,20 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
     const Instruction& ins = code[j];
     const std::size_t at = folded_ ? origin_[j] : j;
     const Opcode op = ins.op;
+    if (outer && outer->action[at] != IntervalFreeze::Evaluate)
+    {
+      if (outer->action[at] == IntervalFreeze::Frozen)
+      {
+        const Range r{ outer->value[at], outer->nan[at] != 0 };
+        put(ins.out, r);
+        if (inner)
+        {
+          inner->value[at] = r.v;
+          inner->nan[at] = r.nan ? 1 : 0;
+        }
+      }
+      continue;
+    }
     if (op == Opcode::Call)
     {
       const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
@@ -788,7 +825,13 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
     if (op == Opcode::Input)
     {
       const Interval& in = box[static_cast<std::size_t>(ins.index)];
-      put(ins.out, (in.lo <= in.hi) ? Range{ in, false } : whole(true));
+      const Range r = (in.lo <= in.hi) ? Range{ in, false } : whole(true);
+      put(ins.out, r);
+      if (inner)
+      {
+        inner->value[at] = r.v;
+        inner->nan[at] = r.nan ? 1 : 0;
+      }
       continue;
     }
     const int operands = operands_by_opcode[static_cast<std::size_t>(op)];
@@ -1007,6 +1050,11 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       choices[at] = r.v.lo != 0.0 ? Choice::True : Choice::False;
     }
     put(ins.out, r);
+    if (inner)
+    {
+      inner->value[at] = r.v;
+      inner->nan[at] = r.nan ? 1 : 0;
+    }
   }
   if (!tape.outputs.empty())
   {

@@ -8,6 +8,7 @@
 #include "Eval/interval.h"
 #include "Eval/tape_simplifier.h"
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -21,6 +22,29 @@ struct IntervalResult
   /// "unknown, possibly NaN" (e.g. an unguarded sqrt of a negative part, or an opaque call).
   Interval value;
   bool may_fail = false; ///< some point of the box may raise a run-time error
+};
+
+/// What the evaluation of a box lets the boxes inside it skip (IntervalEvaluator::evaluate with
+/// `outer` and `inner`). Where an operand of max/min or of an R-function is dominated over the
+/// box (max/min: decided; an R-union: the operand is negative and at least twice as large in
+/// magnitude as the other, so it moves the result by at most a tenth of its own change), its
+/// instruction's result is frozen at its enclosure over this box, and every instruction that
+/// only it read is skipped. Always sound: a sub-box's values of any instruction lie in its
+/// enclosure over the box. Looser than evaluating the sub-box in full, and only ever used for
+/// enclosures (culling); the values that reach an output come from the tape itself.
+struct IntervalFreeze
+{
+  enum Action : std::uint8_t
+  {
+    Evaluate = 0,
+    Skip = 1,  ///< no instruction that is evaluated reads it
+    Frozen = 2 ///< its result is `value` (and NaN is possible when `nan`)
+  };
+  std::vector<std::uint8_t> action; ///< per instruction of the tape
+  std::vector<Interval> value;      ///< per instruction: its enclosure over the box
+  std::vector<std::uint8_t> nan;
+  std::size_t frozen = 0;
+  std::size_t skipped = 0;
 };
 
 class IntervalEvaluator
@@ -37,6 +61,16 @@ public:
   /// Throws std::invalid_argument if choices.size() != tape().code.size().
   IntervalResult evaluate(std::span<const Interval> box, std::span<Choice> choices);
 
+  /// The same for a box inside the box `outer` was made for (null: none), which may be skipped
+  /// as it says; with `inner`, records each instruction's enclosure over this box, for
+  /// make_freeze. `choices` may be empty; when given, instructions skipped keep Choice::Keep.
+  IntervalResult evaluate(std::span<const Interval> box, std::span<Choice> choices,
+    const IntervalFreeze* outer, IntervalFreeze* inner);
+  /// Makes `inner` (recorded by the last evaluate) the freeze for boxes inside that box: what
+  /// `outer` froze and skipped, and what this box dominates. False (and `inner` unusable) if the
+  /// tape cannot be frozen (opaque calls). Worth it only when it skips a good part of the tape.
+  bool make_freeze(const IntervalFreeze* outer, IntervalFreeze& inner);
+
   const Tape& tape() const { return *tape_; }
 
   /// Evaluates `tape` from now on, keeping the buffers (for walks that evaluate many boxes, each
@@ -45,7 +79,9 @@ public:
   void rebind(std::shared_ptr<const Tape> tape, bool trusted = false);
 
 private:
-  IntervalResult run(std::span<const Interval> box, Choice* choices);
+  IntervalResult run(std::span<const Interval> box, Choice* choices,
+    const IntervalFreeze* outer = nullptr, IntervalFreeze* inner = nullptr);
+  void find_producers(); // producers_, for make_freeze
 
   void prepare(bool fold); // the buffers and, with fold, the program below, from tape_
 
@@ -60,6 +96,12 @@ private:
   std::vector<std::uint32_t> origin_;   // its index in the tape (for choices)
   std::vector<Interval> slots_;        // encloses the slot's non-NaN values over the box
   std::vector<unsigned char> may_nan_; // the slot may be NaN somewhere in the box
+  // For freezing: the instruction whose result each operand (a, b, c) of each instruction reads
+  // (-1: none or an unwritten slot), made on first use per tape.
+  std::vector<std::int32_t> producers_;
+  std::int32_t result_ = -1; // the instruction whose result is outputs[0]
+  std::vector<std::uint8_t> needed_;
+  std::vector<std::uint32_t> readers_, dominated_; // per instruction, for make_freeze
 };
 
 } // namespace frep

@@ -10,7 +10,6 @@ namespace frep::raycast::detail
 PieceTracer::Level::Level(std::shared_ptr<const Tape> t)
   : tape(std::move(t))
   , interval(tape)
-  , point(tape)
   , choices(tape->code.size())
   , simplifiable(may_simplify(*tape))
 {
@@ -99,66 +98,155 @@ void PieceTracer::set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind)
   ++stats_.hits;
 }
 
-double PieceTracer::value(const Ray& ray, double lambda, Level& level)
+void PieceTracer::push_point(const Ray& ray, double lambda)
 {
-  std::array<double, 3> p;
-  for (int k = 0; k < 3; ++k)
+  xs_.push_back(std::clamp(ray.o[0] + lambda * ray.d[0], box_[0].lo, box_[0].hi));
+  ys_.push_back(std::clamp(ray.o[1] + lambda * ray.d[1], box_[1].lo, box_[1].hi));
+  zs_.push_back(std::clamp(ray.o[2] + lambda * ray.d[2], box_[2].lo, box_[2].hi));
+}
+
+void PieceTracer::evaluate_points(Level& level)
+{
+  values_.resize(xs_.size());
+  if (xs_.empty())
   {
-    p[k] = std::clamp(ray.o[k] + lambda * ray.d[k], box_[k].lo, box_[k].hi);
+    return;
   }
-  ++stats_.point_evaluations;
-  return level.point.value(p);
+  if (!level.batch)
+  {
+    BatchOptions options;
+    options.pool = caller_only_;
+    options.block_size = 64;
+    level.batch = std::make_unique<BatchEvaluator>(level.tape, options);
+    if (&level == &root_)
+    {
+      // The root's tape runs every march and refinement of the image: compile it now rather
+      // than at the first batch of 512 points (batches here are a few rays' steps).
+      level.batch->compiled();
+    }
+  }
+  const double* inputs[3] = { xs_.data(), ys_.data(), zs_.data() };
+  level.batch->evaluate(inputs, xs_.size(), values_.data());
+  stats_.point_evaluations += xs_.size();
 }
 
-double PieceTracer::refine(const Ray& ray, double outside, double inside, Level& level)
+void PieceTracer::bracket(std::size_t ray, double outside, double f_out, bool out_known,
+  double inside, double f_in, bool in_known)
 {
-  return refine(ray, outside, value(ray, outside, level), inside, value(ray, inside, level), level);
+  Bracket b;
+  b.ray = ray;
+  b.outside = outside;
+  b.f_out = f_out;
+  b.out_known = out_known;
+  b.inside = inside;
+  b.f_in = f_in;
+  b.in_known = in_known;
+  b.tolerance = options_.tolerance * view_.footprint(inside);
+  brackets_.push_back(b);
 }
 
-double PieceTracer::refine(const Ray& ray,
-  double outside,
-  double f_out,
-  double inside,
-  double f_in,
-  Level& level)
+void PieceTracer::refine_brackets(Level& level)
 {
+  if (brackets_.empty())
+  {
+    return;
+  }
+  // The unknown ends first, in one batch.
+  xs_.clear();
+  ys_.clear();
+  zs_.clear();
+  for (const Bracket& b : brackets_)
+  {
+    if (!b.out_known)
+    {
+      push_point(rays_[b.ray], b.outside);
+    }
+    if (!b.in_known)
+    {
+      push_point(rays_[b.ray], b.inside);
+    }
+  }
+  evaluate_points(level);
+  std::size_t v = 0;
+  for (Bracket& b : brackets_)
+  {
+    b.f_out = b.out_known ? b.f_out : values_[v++];
+    b.f_in = b.in_known ? b.f_in : values_[v++];
+  }
   // Regula falsi with the Illinois rule (the bracket's stale end has its value halved), which
   // converges superlinearly on smooth F; a bisection step whenever F is not finite or the
-  // interpolated point is not strictly inside the bracket.
-  const double tolerance = options_.tolerance * view_.footprint(inside);
-  int stale = 0; // +1: the outside end kept twice in a row, -1: the inside end
-  for (int i = 0; i < 60 && std::abs(inside - outside) > tolerance; ++i)
+  // interpolated point is not strictly inside the bracket. Each ray's steps are those of a ray
+  // refined alone; the rays only share the batches.
+  for (std::size_t open = brackets_.size(); open > 0;)
   {
-    double next = 0.5 * (outside + inside);
-    if (std::isfinite(f_out) && std::isfinite(f_in) && f_in - f_out > 0.0)
+    xs_.clear();
+    ys_.clear();
+    zs_.clear();
+    for (Bracket& b : brackets_)
     {
-      const double t = outside + (inside - outside) * (-f_out / (f_in - f_out));
-      if ((t - outside) * (inside - t) > 0.0)
+      if (!b.open)
       {
-        next = t;
+        continue;
       }
+      if (b.steps >= 60 || !(std::abs(b.inside - b.outside) > b.tolerance))
+      {
+        b.open = false;
+        --open;
+        continue;
+      }
+      double next = 0.5 * (b.outside + b.inside);
+      if (std::isfinite(b.f_out) && std::isfinite(b.f_in) && b.f_in - b.f_out > 0.0)
+      {
+        const double t = b.outside + (b.inside - b.outside) * (-b.f_out / (b.f_in - b.f_out));
+        if ((t - b.outside) * (b.inside - t) > 0.0)
+        {
+          next = t;
+        }
+      }
+      if (next == b.outside || next == b.inside)
+      {
+        b.open = false;
+        --open;
+        continue;
+      }
+      b.next = next;
+      push_point(rays_[b.ray], next);
     }
-    if (next == outside || next == inside)
+    if (xs_.empty())
     {
       break;
     }
-    const double f = value(ray, next, level);
-    if (f >= 0.0)
+    evaluate_points(level);
+    v = 0;
+    for (Bracket& b : brackets_)
     {
-      inside = next;
-      f_in = f;
-      f_out *= stale > 0 ? 0.5 : 1.0;
-      stale = stale > 0 ? stale + 1 : 1;
-    }
-    else
-    {
-      outside = next;
-      f_out = f;
-      f_in *= stale < 0 ? 0.5 : 1.0;
-      stale = stale < 0 ? stale - 1 : -1;
+      if (!b.open)
+      {
+        continue;
+      }
+      const double f = values_[v++];
+      ++b.steps;
+      if (f >= 0.0)
+      {
+        b.inside = b.next;
+        b.f_in = f;
+        b.f_out *= b.stale > 0 ? 0.5 : 1.0;
+        b.stale = b.stale > 0 ? b.stale + 1 : 1;
+      }
+      else
+      {
+        b.outside = b.next;
+        b.f_out = f;
+        b.f_in *= b.stale < 0 ? 0.5 : 1.0;
+        b.stale = b.stale < 0 ? b.stale - 1 : -1;
+      }
     }
   }
-  return inside;
+  for (const Bracket& b : brackets_)
+  {
+    set_hit(rays_[b.ray], hits_[b.ray], b.inside, HitKind::Surface);
+  }
+  brackets_.clear();
 }
 
 void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1, Level& level)
@@ -181,28 +269,15 @@ void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1
     marches_.push_back({ i, start, end, steps, xs_.size() });
     for (int s = 0; s <= steps; ++s)
     {
-      const double lambda = s == steps ? end : start + (end - start) * s / steps;
-      xs_.push_back(std::clamp(ray.o[0] + lambda * ray.d[0], box_[0].lo, box_[0].hi));
-      ys_.push_back(std::clamp(ray.o[1] + lambda * ray.d[1], box_[1].lo, box_[1].hi));
-      zs_.push_back(std::clamp(ray.o[2] + lambda * ray.d[2], box_[2].lo, box_[2].hi));
+      push_point(ray, s == steps ? end : start + (end - start) * s / steps);
     }
   }
   if (xs_.empty())
   {
     return;
   }
-  values_.resize(xs_.size());
-  if (!level.batch)
-  {
-    BatchOptions options;
-    options.pool = caller_only_;
-    options.block_size = 64;
-    level.batch = std::make_unique<BatchEvaluator>(level.tape, options);
-  }
-  const double* inputs[3] = { xs_.data(), ys_.data(), zs_.data() };
-  level.batch->evaluate(inputs, xs_.size(), values_.data());
-  stats_.point_evaluations += xs_.size();
-
+  evaluate_points(level);
+  // (the brackets' refinement reuses the point buffers: the march's values are read first)
   for (const March& m : marches_)
   {
     Ray& ray = rays_[m.ray];
@@ -217,7 +292,7 @@ void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1
       }
       else if (std::isfinite(ray.outside) && ray.outside < m.start)
       {
-        set_hit(ray, hit, refine(ray, ray.outside, m.start, level), HitKind::Surface);
+        bracket(m.ray, ray.outside, 0.0, false, m.start, f[0], true);
       }
       else
       {
@@ -232,13 +307,14 @@ void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1
     }
     if (s <= m.steps)
     {
-      set_hit(ray, hit, refine(ray, depth(s - 1), f[s - 1], depth(s), f[s], level), HitKind::Surface);
+      bracket(m.ray, depth(s - 1), f[s - 1], true, depth(s), f[s], true);
     }
     else
     {
       ray.outside = m.end;
     }
   }
+  refine_brackets(level);
 }
 
 void PieceTracer::solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level)
@@ -260,7 +336,7 @@ void PieceTracer::solid(int x0, int y0, int x1, int y1, double l0, double l1, Le
       }
       else if (std::isfinite(ray.outside) && ray.outside < start)
       {
-        set_hit(ray, hits_[i], refine(ray, ray.outside, start, level), HitKind::Surface);
+        bracket(i, ray.outside, 0.0, false, start, 0.0, false);
       }
       else
       {
@@ -268,6 +344,7 @@ void PieceTracer::solid(int x0, int y0, int x1, int y1, double l0, double l1, Le
       }
     }
   }
+  refine_brackets(level);
 }
 
 double PieceTracer::march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const
@@ -288,7 +365,20 @@ double PieceTracer::march_steps(int x0, int y0, int x1, int y1, double l0, doubl
   return steps;
 }
 
-void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level)
+const IntervalFreeze* PieceTracer::FreezeLink::get()
+{
+  if (!tried)
+  {
+    tried = true;
+    // Kept only where it skips something: evaluating with a freeze costs a check per
+    // instruction, and the enclosing one is as good where this one adds nothing.
+    made = level->interval.make_freeze(outer, *inner) && inner->skipped > 0 ? inner : outer;
+  }
+  return made;
+}
+
+void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
+  FreezeLink* link, std::size_t level_depth)
 {
   // The depths the open rays of the piece still search.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -342,8 +432,14 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   const bool record = level.worth_trying() && options_.simplify_area > 0 &&
                       area >= options_.simplify_area;
   ++stats_.interval_evaluations;
-  const IntervalResult r = record ? level.interval.evaluate(region, level.choices)
-                                  : level.interval.evaluate(region);
+  while (freezes_.size() <= level_depth)
+  {
+    freezes_.emplace_back();
+  }
+  IntervalFreeze& inner = freezes_[level_depth];
+  const IntervalFreeze* freeze = link ? link->get() : nullptr;
+  const IntervalResult r = level.interval.evaluate(
+    region, record ? std::span<Choice>(level.choices) : std::span<Choice>(), freeze, &inner);
   if (r.value.hi < 0.0)
   {
     // Empty for every ray: each knows a depth outside, for the bisection of a solid piece behind.
@@ -379,6 +475,9 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
     }
   }
   Level& use = child ? *child : level;
+  // The same tape below: what this piece dominates need not be evaluated again inside it.
+  FreezeLink own{ &level, freeze, &inner };
+  FreezeLink* below = child ? nullptr : &own;
 
   const int w = x1 - x0, h = y1 - y0;
   const double width = std::max(w, h) * view_.footprint(l1);
@@ -389,10 +488,10 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
     if (depth > options_.leaf_depth * view_.footprint(l1) && depth > 0.0)
     {
       const double mid = 0.5 * (l0 + l1);
-      piece(x0, y0, x1, y1, l0, mid, use);
+      piece(x0, y0, x1, y1, l0, mid, use, below, level_depth + 1);
       if (!rays_[i].done)
       {
-        piece(x0, y0, x1, y1, mid, l1, use);
+        piece(x0, y0, x1, y1, mid, l1, use, below, level_depth + 1);
       }
       return;
     }
@@ -402,22 +501,22 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   if (depth > 2.0 * width)
   {
     const double mid = 0.5 * (l0 + l1);
-    piece(x0, y0, x1, y1, l0, mid, use);
-    piece(x0, y0, x1, y1, mid, l1, use);
+    piece(x0, y0, x1, y1, l0, mid, use, below, level_depth + 1);
+    piece(x0, y0, x1, y1, mid, l1, use, below, level_depth + 1);
     return;
   }
   const int xm = w > 1 ? x0 + w / 2 : x1, ym = h > 1 ? y0 + h / 2 : y1;
-  piece(x0, y0, xm, ym, l0, l1, use);
+  piece(x0, y0, xm, ym, l0, l1, use, below, level_depth + 1);
   if (xm < x1)
   {
-    piece(xm, y0, x1, ym, l0, l1, use);
+    piece(xm, y0, x1, ym, l0, l1, use, below, level_depth + 1);
   }
   if (ym < y1)
   {
-    piece(x0, ym, xm, y1, l0, l1, use);
+    piece(x0, ym, xm, y1, l0, l1, use, below, level_depth + 1);
     if (xm < x1)
     {
-      piece(xm, ym, x1, y1, l0, l1, use);
+      piece(xm, ym, x1, y1, l0, l1, use, below, level_depth + 1);
     }
   }
 }

@@ -13,6 +13,7 @@
 #include "Eval/thread_pool.h"
 
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <span>
@@ -78,7 +79,6 @@ private:
   {
     std::shared_ptr<const Tape> tape;
     IntervalEvaluator interval;
-    PointEvaluator point;
     std::unique_ptr<BatchEvaluator> batch; // made when the level marches
     std::vector<Choice> choices;
     bool simplifiable = false;
@@ -97,17 +97,37 @@ private:
     bool done = true;
   };
 
-  void piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
+  /// What the enclosing piece's interval lets the pieces inside it skip (IntervalFreeze), made
+  /// when one of them first evaluates an interval (most are marched without one).
+  struct FreezeLink
+  {
+    Level* level = nullptr;                  // whose tape and evaluator
+    const IntervalFreeze* outer = nullptr;   // the enclosing piece's own freeze
+    IntervalFreeze* inner = nullptr;         // the piece's recorded enclosures
+    const IntervalFreeze* made = nullptr;
+    bool tried = false;
+    const IntervalFreeze* get();
+  };
+  /// `link`: the enclosing piece's freeze (null: none, or another tape); `level_depth`: in the
+  /// recursion (a freeze per depth).
+  void piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
+    FreezeLink* link = nullptr, std::size_t level_depth = 0);
   double march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const;
   void solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
   /// Marches the rays `which` (indices into the tile) over [l0, l1], all steps in one batch.
   void march(std::span<const std::size_t> which, double l0, double l1, Level& level);
-  /// F at depth lambda of the ray (the point clamped into the box, where the tapes are exact).
-  double value(const Ray& ray, double lambda, Level& level);
-  /// The root between a depth outside and one inside (values known or not).
-  double refine(const Ray& ray, double outside, double inside, Level& level);
-  double refine(const Ray& ray, double outside, double f_out, double inside, double f_in,
-    Level& level);
+  /// The point of depth lambda of the ray, clamped into the box (where the tapes are exact),
+  /// appended to xs_, ys_, zs_.
+  void push_point(const Ray& ray, double lambda);
+  /// F at the points xs_, ys_, zs_ into values_ (the level's batch evaluator).
+  void evaluate_points(Level& level);
+  /// Brackets the root of ray `ray` between a depth outside and one inside; a value not yet
+  /// known is NaN with its `known` flag false. refine_brackets() finds every bracketed root.
+  void bracket(std::size_t ray, double outside, double f_out, bool out_known, double inside,
+    double f_in, bool in_known);
+  /// Refines every pending bracket in lock step (one batch of points per step for all of them)
+  /// and sets the rays' surface hits.
+  void refine_brackets(Level& level);
   void set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind);
 
   std::array<Interval, 3> model_box_;
@@ -125,6 +145,20 @@ private:
     std::size_t first; // its first value in values_
   };
   std::vector<March> marches_;
+  // A root being refined (regula falsi with the Illinois rule, per ray).
+  struct Bracket
+  {
+    std::size_t ray;
+    double outside, f_out, inside, f_in;
+    double tolerance = 0.0;
+    int stale = 0; // +1: the outside end kept twice in a row, -1: the inside end
+    int steps = 0;
+    bool out_known, in_known;
+    bool open = true;
+    double next = 0.0;
+  };
+  std::vector<Bracket> brackets_;
+  std::deque<IntervalFreeze> freezes_; // per depth of the recursion (stable addresses)
   std::vector<double> xs_, ys_, zs_, values_;
   Statistics stats_;
   // The current tile.

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <deque>
+#include <numbers>
 #include <cmath>
 #include <limits>
 
@@ -261,6 +263,122 @@ TEST(IntervalEvaluator, CallsAreUnknown)
   EXPECT_TRUE(r.may_fail);
   EXPECT_EQ(r.value.lo, -kInf);
   EXPECT_EQ(r.value.hi, kInf);
+}
+
+} // namespace
+} // namespace frep::test
+
+namespace frep::test
+{
+namespace
+{
+
+/// 40 balls on a ring, joined by `join` (Max or Union): most of them far from any small box.
+std::shared_ptr<const Tape> ring_of_balls(Opcode join)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0), y = b.input(1), z = b.input(2);
+  std::uint32_t f = 0;
+  for (int k = 0; k < 40; ++k)
+  {
+    const double angle = 2 * std::numbers::pi * k / 40;
+    const auto dx = b.op(Opcode::Sub, x, b.constant(8 * std::cos(angle)));
+    const auto dy = b.op(Opcode::Sub, y, b.constant(8 * std::sin(angle)));
+    const auto r2 = b.op(Opcode::Add, b.op(Opcode::Add, b.op(Opcode::Square, dx),
+      b.op(Opcode::Square, dy)), b.op(Opcode::Square, z));
+    const auto ball = b.op(Opcode::Sub, b.constant(1.0), b.op(Opcode::Sqrt, r2));
+    f = k == 0 ? ball : b.op(join, f, ball);
+  }
+  b.error_if(b.op(Opcode::Gt, x, b.constant(100))); // an error check stays evaluated
+  return b.finish({ f });
+}
+
+// Boxes inside boxes, three levels deep, each evaluated with its parent's freeze: the enclosure
+// holds F at points of the box (the freeze is sound; it need not contain the full evaluation's
+// enclosure, since the rules' rounding margins are not monotone in their operands' widths),
+// decided maxima keep it exactly the full evaluation's, and most of the tape is skipped near one
+// ball.
+TEST(IntervalFreeze, NestedBoxesEncloseTheFullEvaluationAndSkipMostOfTheTape)
+{
+  std::mt19937_64 rng(5);
+  for (const Opcode join : { Opcode::Max, Opcode::Union })
+  {
+    const auto tape = ring_of_balls(join);
+    IntervalEvaluator frozen(tape), full(tape);
+    PointEvaluator point(tape);
+    std::size_t skipped = 0, boxes = 0;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+      std::uniform_real_distribution<double> where(-10, 8);
+      std::vector<Interval> box{ { where(rng), 0 }, { where(rng), 0 }, { -1, 1 } };
+      box[0].hi = box[0].lo + 2;
+      box[1].hi = box[1].lo + 2;
+      std::deque<IntervalFreeze> freezes(4);
+      const IntervalFreeze* outer = nullptr;
+      for (int level = 0; level < 4; ++level)
+      {
+        const IntervalResult got = frozen.evaluate(box, {}, outer, &freezes[level]);
+        const IntervalResult want = full.evaluate(box);
+        for (int p = 0; p < 20; ++p)
+        {
+          std::vector<double> at(3), out(1);
+          for (int k = 0; k < 3; ++k)
+          {
+            at[k] = std::uniform_real_distribution<double>(box[k].lo, box[k].hi)(rng);
+          }
+          point.evaluate(at, out);
+          ASSERT_LE(got.value.lo, out[0]) << trial << " level " << level;
+          ASSERT_GE(got.value.hi, out[0]) << trial << " level " << level;
+        }
+        if (join == Opcode::Max)
+        {
+          EXPECT_EQ(got.value.lo, want.value.lo); // decided max: the loser does not matter
+          EXPECT_EQ(got.value.hi, want.value.hi);
+        }
+        ASSERT_TRUE(frozen.make_freeze(outer, freezes[level]));
+        skipped += freezes[level].skipped;
+        ++boxes;
+        outer = &freezes[level];
+        for (auto& side : box) // a random quarter (an eighth) inside
+        {
+          const double half = (side.hi - side.lo) / 2;
+          side.lo += std::uniform_int_distribution<int>(0, 1)(rng) * half;
+          side.hi = side.lo + half;
+        }
+      }
+    }
+    EXPECT_GT(double(skipped) / double(boxes * tape->code.size()), 0.5) << opcode_name(join);
+  }
+}
+
+// A dominated value that something else also reads stays evaluated: the other reader would see
+// the outer box's looser enclosure.
+TEST(IntervalFreeze, AValueAlsoReadElsewhereIsNotFrozen)
+{
+  for (const bool shared : { false, true })
+  {
+    TapeBuilder b(2);
+    const auto x = b.input(0), y = b.input(1);
+    const auto low = b.op(Opcode::Sub, b.op(Opcode::Mul, y, y), b.constant(10)); // in [-10, -9]
+    auto f = b.op(Opcode::Max, x, low);
+    if (shared)
+    {
+      f = b.op(Opcode::Add, f, low);
+    }
+    const auto tape = b.finish({ f });
+    IntervalEvaluator evaluator(tape);
+    IntervalFreeze freeze;
+    const std::vector<Interval> box{ { 0, 1 }, { 0, 1 } };
+    evaluator.evaluate(box, {}, nullptr, &freeze);
+    ASSERT_TRUE(evaluator.make_freeze(nullptr, freeze));
+    EXPECT_EQ(freeze.frozen, shared ? 0u : 1u);
+    const std::vector<Interval> inner{ { 0.5, 1 }, { 0.5, 1 } };
+    IntervalFreeze scratch;
+    const IntervalResult got = evaluator.evaluate(inner, {}, &freeze, &scratch);
+    const IntervalResult want = evaluator.evaluate(inner);
+    EXPECT_EQ(got.value.lo, want.value.lo);
+    EXPECT_EQ(got.value.hi, want.value.hi);
+  }
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "Eval/thread_pool.h"
 
 #include <chrono>
+#include <optional>
 
 namespace frep::mesh::detail
 {
@@ -61,15 +62,21 @@ void BoxWalker::run(const CellBox& block, Piece& piece)
   walk(block, root_, 0);
 }
 
-void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth)
+void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFreeze* link)
 {
   Piece& piece = builder_.piece();
   const bool simplify = options_.cull && options_.simplify && level.simplifiable;
   if (options_.cull)
   {
     ++piece.boxes_tested;
-    const BoxSign sign = classify(
-      enclose(level.interval, frame_, box, simplify ? &level.choices : nullptr), options_.iso);
+    while (freezes_.size() <= depth)
+    {
+      freezes_.emplace_back();
+    }
+    const BoxSign sign = classify(enclose(level.interval, frame_, box,
+                                    simplify ? &level.choices : nullptr,
+                                    link ? link->get() : nullptr, &freezes_[depth]),
+      options_.iso);
     if (sign != BoxSign::Unknown)
     {
       ++piece.boxes_culled;
@@ -102,9 +109,15 @@ void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth)
     leaf(box);
     return;
   }
+  // The same tape below: what this box dominates need not be evaluated again inside it.
+  std::optional<LazyFreeze> own;
+  if (options_.cull && below == &level)
+  {
+    own.emplace(level.interval, link ? link->get() : nullptr, freezes_[depth]);
+  }
   for (const CellBox& child : split(box, leaf_cells, frame_.dimension))
   {
-    walk(child, *below, depth + 1);
+    walk(child, *below, depth + 1, own ? &*own : nullptr);
   }
 }
 

@@ -96,7 +96,7 @@ BoxSign classify(const IntervalResult& r, double iso)
 }
 
 IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
-  std::vector<Choice>* choices)
+  std::vector<Choice>* choices, const IntervalFreeze* outer, IntervalFreeze* inner)
 {
   std::array<Interval, 3> intervals{};
   for (int a = 0; a < frame.dimension; ++a)
@@ -104,6 +104,11 @@ IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, con
     intervals[a] = Interval{ frame.coord(a, box.c0[a]), frame.coord(a, box.c1[a]) };
   }
   const std::span<const Interval> corners(intervals.data(), static_cast<std::size_t>(frame.dimension));
+  if (outer || inner)
+  {
+    return evaluator.evaluate(corners, choices ? std::span<Choice>(*choices) : std::span<Choice>(),
+      outer, inner);
+  }
   return choices ? evaluator.evaluate(corners, *choices) : evaluator.evaluate(corners);
 }
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <deque>
 #include <memory>
 #include <limits>
 #include <string>
@@ -162,8 +163,10 @@ BoxSign classify(const IntervalResult& r, double iso);
 /// The enclosure of F over the cells' box (positions of its extreme samples).
 /// Encloses F over the box's samples; with `choices`, also records what the box decides about the
 /// tape's instructions (IntervalEvaluator::evaluate with choices).
+/// `outer` and `inner`: IntervalEvaluator::evaluate's freezes (null: none).
 IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
-  std::vector<Choice>* choices = nullptr);
+  std::vector<Choice>* choices = nullptr, const IntervalFreeze* outer = nullptr,
+  IntervalFreeze* inner = nullptr);
 
 /// Splits `box` (some axis longer than `leaf` cells) into up to 8 children whose sizes are
 /// multiples of `leaf` except the last along each axis.
@@ -212,13 +215,15 @@ private:
     void rebind(std::shared_ptr<const Tape> t); // a simplified tape (trusted)
   };
 
-  void walk(const CellBox& box, Level& level, std::size_t depth);
+  /// `link`: what the enclosing box's interval lets this one skip (null: none, or another tape).
+  void walk(const CellBox& box, Level& level, std::size_t depth, LazyFreeze* link = nullptr);
   void sample(const CellBox& box, Level& level);
   Level& level_below(std::size_t depth, std::shared_ptr<const Tape> tape);
 
   TapeSimplifier simplifier_;
   Level root_;
   std::vector<std::unique_ptr<Level>> below_; // [d]: the level below a box at depth d
+  std::deque<IntervalFreeze> freezes_;        // [d]: a box's at depth d (stable addresses)
   std::unique_ptr<eval::BlockRunner> runner_; // samples the leaves, rebound to their tapes
   std::vector<double> xs_, ys_, zs_, values_;
 };

@@ -365,20 +365,8 @@ double PieceTracer::march_steps(int x0, int y0, int x1, int y1, double l0, doubl
   return steps;
 }
 
-const IntervalFreeze* PieceTracer::FreezeLink::get()
-{
-  if (!tried)
-  {
-    tried = true;
-    // Kept only where it skips something: evaluating with a freeze costs a check per
-    // instruction, and the enclosing one is as good where this one adds nothing.
-    made = level->interval.make_freeze(outer, *inner) && inner->skipped > 0 ? inner : outer;
-  }
-  return made;
-}
-
 void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
-  FreezeLink* link, std::size_t level_depth)
+  LazyFreeze* link, std::size_t level_depth)
 {
   // The depths the open rays of the piece still search.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -476,8 +464,8 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   }
   Level& use = child ? *child : level;
   // The same tape below: what this piece dominates need not be evaluated again inside it.
-  FreezeLink own{ &level, freeze, &inner };
-  FreezeLink* below = child ? nullptr : &own;
+  LazyFreeze own(level.interval, freeze, inner);
+  LazyFreeze* below = child ? nullptr : &own;
 
   const int w = x1 - x0, h = y1 - y0;
   const double width = std::max(w, h) * view_.footprint(l1);

@@ -97,21 +97,10 @@ private:
     bool done = true;
   };
 
-  /// What the enclosing piece's interval lets the pieces inside it skip (IntervalFreeze), made
-  /// when one of them first evaluates an interval (most are marched without one).
-  struct FreezeLink
-  {
-    Level* level = nullptr;                  // whose tape and evaluator
-    const IntervalFreeze* outer = nullptr;   // the enclosing piece's own freeze
-    IntervalFreeze* inner = nullptr;         // the piece's recorded enclosures
-    const IntervalFreeze* made = nullptr;
-    bool tried = false;
-    const IntervalFreeze* get();
-  };
-  /// `link`: the enclosing piece's freeze (null: none, or another tape); `level_depth`: in the
-  /// recursion (a freeze per depth).
+  /// `link`: what the enclosing piece's interval lets this one skip (IntervalFreeze; null: none,
+  /// or another tape); `level_depth`: in the recursion (a freeze per depth).
   void piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
-    FreezeLink* link = nullptr, std::size_t level_depth = 0);
+    LazyFreeze* link = nullptr, std::size_t level_depth = 0);
   double march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const;
   void solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
   /// Marches the rays `which` (indices into the tile) over [l0, l1], all steps in one batch.

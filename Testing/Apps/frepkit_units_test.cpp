@@ -8,9 +8,14 @@
 #include "sampling_grid.h"
 #include "section_writers/cli_writer.h"
 #include "section_writers/contour_loops.h"
+#include "section_writers/png_writer.h"
 #include "user_error.h"
 
 #include <gtest/gtest.h>
+
+#if defined(FREPKIT_TEST_PNG)
+#include <png.h>
+#endif
 
 #include <cstring>
 #include <sstream>
@@ -364,6 +369,44 @@ TEST(SamplingGrid, BoxAndGridRules)
   EXPECT_THROW(make_grid({}, { 4, 4 }, 3), UserError);
   EXPECT_NO_THROW(make_grid({ 0, 0, 1, 1 }, { 4, 4 }, 2));
 }
+
+#if defined(FREPKIT_TEST_PNG)
+/// The RGB pixels of a PNG in memory (libpng's simplified reader).
+std::vector<std::uint8_t> decode_png(const std::string& bytes, int& colour_type)
+{
+  colour_type = static_cast<unsigned char>(bytes.at(25)); // IHDR's colour type
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  EXPECT_TRUE(png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()));
+  image.format = PNG_FORMAT_RGB;
+  std::vector<std::uint8_t> rgb(PNG_IMAGE_SIZE(image));
+  EXPECT_TRUE(png_image_finish_read(&image, nullptr, rgb.data(), 0, nullptr));
+  return rgb;
+}
+
+// Pictures of at most 256 colours (sign images) are written with a palette, the others as RGB;
+// either way they decode to the same pixels.
+TEST(PngWriter, FewColoursAsAPaletteManyAsRgbSamePixels)
+{
+  for (const int colours : { 3, 256, 257, 1000 })
+  {
+    const int width = 40, height = 30;
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width * height * 3));
+    for (int p = 0; p < width * height; ++p)
+    {
+      const int c = (p * 7) % colours;
+      rgb[3 * p] = static_cast<std::uint8_t>(c & 0xff);
+      rgb[3 * p + 1] = static_cast<std::uint8_t>(c >> 8);
+      rgb[3 * p + 2] = static_cast<std::uint8_t>(255 - (c & 0xff));
+    }
+    std::ostringstream out;
+    write_png(out, width, height, rgb);
+    int colour_type = -1;
+    EXPECT_EQ(decode_png(out.str(), colour_type), rgb) << colours;
+    EXPECT_EQ(colour_type, colours <= 256 ? PNG_COLOR_TYPE_PALETTE : PNG_COLOR_TYPE_RGB) << colours;
+  }
+}
+#endif
 
 } // namespace
 } // namespace frepkit

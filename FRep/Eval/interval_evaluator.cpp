@@ -685,11 +685,17 @@ void IntervalEvaluator::prepare(bool fold)
     code_.clear();
     immediate_.clear();
     origin_.clear();
+    position_.clear();
     return;
   }
   eval::BatchProgram program = eval::make_batch_program(*tape_);
   code_ = std::move(program.code);
   origin_ = std::move(program.origin);
+  position_.assign(tape_->code.size(), kNotInCode);
+  for (std::size_t j = 0; j < origin_.size(); ++j)
+  {
+    position_[origin_[j]] = j;
+  }
   immediate_.resize(program.immediate.size());
   std::transform(program.immediate.begin(), program.immediate.end(), immediate_.begin(),
     [](eval::Immediate i) { return static_cast<std::uint8_t>(i); });
@@ -789,8 +795,23 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
   const auto immediate = [](double v)
   { return std::isnan(v) ? whole(true) : Range{ Interval::point(v), false }; };
   const std::vector<Instruction>& code = folded_ ? code_ : tape.code;
-  for (std::size_t j = 0; j < code.size(); ++j)
+  // With a freeze, only its active instructions are visited (the skipped ones cost nothing).
+  const std::size_t visits = outer ? outer->active.size() : code.size();
+  for (std::size_t visit = 0; visit < visits; ++visit)
   {
+    std::size_t j = visit;
+    if (outer)
+    {
+      j = outer->active[visit];
+      if (folded_)
+      {
+        j = position_[j];
+        if (j == kNotInCode)
+        {
+          continue; // a constant folded into its readers
+        }
+      }
+    }
     const Instruction& ins = code[j];
     const std::size_t at = folded_ ? origin_[j] : j;
     const Opcode op = ins.op;

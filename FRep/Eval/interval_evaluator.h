@@ -43,6 +43,7 @@ struct IntervalFreeze
   std::vector<std::uint8_t> action; ///< per instruction of the tape
   std::vector<Interval> value;      ///< per instruction: its enclosure over the box
   std::vector<std::uint8_t> nan;
+  std::vector<std::uint32_t> active; ///< the instructions not skipped, in order
   std::size_t frozen = 0;
   std::size_t skipped = 0;
 };
@@ -94,6 +95,8 @@ private:
   std::vector<Instruction> code_;
   std::vector<std::uint8_t> immediate_; // eval::Immediate per instruction of code_
   std::vector<std::uint32_t> origin_;   // its index in the tape (for choices)
+  std::vector<std::size_t> position_;   // the inverse: a tape index's in code_, or kNotInCode
+  static constexpr std::size_t kNotInCode = ~std::size_t(0);
   std::vector<Interval> slots_;        // encloses the slot's non-NaN values over the box
   std::vector<unsigned char> may_nan_; // the slot may be NaN somewhere in the box
   // For freezing: the instruction whose result each operand (a, b, c) of each instruction reads
@@ -102,6 +105,7 @@ private:
   std::int32_t result_ = -1; // the instruction whose result is outputs[0]
   std::vector<std::uint8_t> needed_;
   std::vector<std::uint32_t> readers_, dominated_; // per instruction, for make_freeze
+  std::vector<std::uint32_t> losers_;              // instructions some reader dominates
 };
 
 /// A box's freeze for the boxes inside it, made when one of them first asks (walks decide many

@@ -106,20 +106,23 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
   {
     find_producers();
   }
+  // Only what the outer box still evaluates or froze can matter (the rest stays skipped: fewer
+  // frozen operands never make more instructions needed), so the passes walk that list.
+  const std::size_t count = outer ? outer->active.size() : n;
+  const auto instruction = [&](std::size_t i) -> std::size_t
+  { return outer ? outer->active[i] : i; };
+
   // The frozen instructions: the outer box's, and those this box dominates at every reader
   // that still runs (a value also read elsewhere, say by both sides of a select, stays live).
-  inner.action.assign(n, IntervalFreeze::Evaluate);
   readers_.assign(n, 0);
   dominated_.assign(n, 0);
-  for (std::size_t j = 0; j < n; ++j)
+  losers_.clear();
+  for (std::size_t i = 0; i < count; ++i)
   {
-    if (outer && outer->action[j] != IntervalFreeze::Evaluate)
+    const std::size_t j = instruction(i);
+    if (outer && outer->action[j] == IntervalFreeze::Frozen)
     {
-      if (outer->action[j] == IntervalFreeze::Frozen)
-      {
-        inner.action[j] = IntervalFreeze::Frozen;
-      }
-      continue;
+      continue; // reads nothing
     }
     for (int k = 0; k < 3; ++k)
     {
@@ -142,16 +145,21 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
       continue;
     }
     const std::int32_t loser = dominated(op, b, a) ? pb : (dominated(op, a, b) ? pa : -1);
-    if (loser >= 0)
+    if (loser >= 0 && dominated_[static_cast<std::size_t>(loser)]++ == 0)
     {
-      ++dominated_[static_cast<std::size_t>(loser)];
+      losers_.push_back(static_cast<std::uint32_t>(loser));
     }
   }
-  for (std::size_t p = 0; p < n; ++p)
+  inner.action.assign(n, IntervalFreeze::Skip);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const std::size_t j = instruction(i);
+    inner.action[j] = outer ? outer->action[j] : IntervalFreeze::Evaluate;
+  }
+  for (const std::uint32_t p : losers_)
   {
     const Opcode op = tape.code[p].op;
-    if (dominated_[p] > 0 && dominated_[p] == readers_[p] && op != Opcode::Const &&
-        op != Opcode::Input)
+    if (dominated_[p] == readers_[p] && op != Opcode::Const && op != Opcode::Input)
     {
       inner.action[p] = IntervalFreeze::Frozen;
     }
@@ -163,16 +171,18 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
   {
     needed_[static_cast<std::size_t>(result_)] = 1;
   }
-  inner.frozen = inner.skipped = 0;
-  for (std::size_t j = n; j-- > 0;)
+  inner.frozen = 0;
+  inner.active.clear();
+  for (std::size_t i = count; i-- > 0;)
   {
+    const std::size_t j = instruction(i);
     const bool error_check = tape.code[j].op == Opcode::ErrorIf;
     if (!needed_[j] && !error_check)
     {
       inner.action[j] = IntervalFreeze::Skip;
-      ++inner.skipped;
       continue;
     }
+    inner.active.push_back(static_cast<std::uint32_t>(j));
     if (inner.action[j] == IntervalFreeze::Frozen)
     {
       ++inner.frozen;
@@ -187,6 +197,8 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
       }
     }
   }
+  std::reverse(inner.active.begin(), inner.active.end());
+  inner.skipped = n - inner.active.size();
   return true;
 }
 

@@ -100,7 +100,9 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
   {
     im.ensure_jit();
   }
-  const auto run = [&](std::size_t block_index, int slot)
+  // A participant's runner, bound once per task (binding copies two shared pointers: atomic
+  // counts that both threads would bounce between their caches block after block).
+  const auto runner = [&](int slot) -> eval::BlockRunner&
   {
     std::unique_ptr<eval::BlockRunner>& mine = im.participants[static_cast<std::size_t>(slot)];
     if (!mine)
@@ -108,8 +110,12 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
       mine = std::make_unique<eval::BlockRunner>(im.block, im.simd);
     }
     mine->bind(im.tape, true, im.jit); // (checked by the constructor; the same tape costs nothing)
+    return *mine;
+  };
+  const auto run = [&](eval::BlockRunner& mine, std::size_t block_index, int slot)
+  {
     const std::size_t base = block_index * block;
-    im.failures[static_cast<std::size_t>(slot)] += mine->run(inputs, base,
+    im.failures[static_cast<std::size_t>(slot)] += mine.run(inputs, base,
       static_cast<int>(std::min(block, count - base)), values, errors, attributes);
   };
   // Hand blocks out in tasks of several blocks: one block is about a microsecond of work on a
@@ -126,9 +132,10 @@ std::size_t BatchEvaluator::evaluate(std::span<const double* const> inputs,
   const auto run_task = [&](std::size_t task, int slot)
   {
     const std::size_t end = std::min(blocks, (task + 1) * per_task);
+    eval::BlockRunner& mine = runner(slot);
     for (std::size_t b = task * per_task; b < end; ++b)
     {
-      run(b, slot);
+      run(mine, b, slot);
     }
   };
   if (tasks == 1)

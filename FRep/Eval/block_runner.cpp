@@ -144,6 +144,10 @@ std::size_t BlockRunner::run(std::span<const double* const> inputs, std::size_t 
   double* values, std::uint32_t* errors, std::span<double* const> attributes)
 {
   const Tape& tape = *tape_;
+  if (jit_ && !tape.can_fail && !tape.outputs.empty())
+  {
+    return run_jit_direct(inputs, base, n, values, errors, attributes);
+  }
   std::fill(lane_errors_.begin(), lane_errors_.begin() + n, 0u);
   Block blk;
   blk.regs = regs_.get();
@@ -226,6 +230,33 @@ void BlockRunner::run_jit(std::span<const double* const> inputs, std::size_t bas
     rows_[tape.outputs[j]] = jit_outputs_[j];
   }
   jit_->run(jit_inputs_.data(), jit_outputs_.data(), lane_errors_.data(), static_cast<std::size_t>(n));
+}
+
+std::size_t BlockRunner::run_jit_direct(std::span<const double* const> inputs, std::size_t base,
+  int n, double* values, std::uint32_t* errors, std::span<double* const> attributes)
+{
+  // No lane can fail, so no output needs a NaN put in: the kernel writes straight into the
+  // caller's arrays (outputs nobody asked for go to their slot rows) and nothing is copied.
+  const Tape& tape = *tape_;
+  jit_inputs_.resize(tape.input_count);
+  for (std::size_t k = 0; k < jit_inputs_.size(); ++k)
+  {
+    jit_inputs_[k] = inputs[k] + base;
+  }
+  jit_outputs_.resize(tape.outputs.size());
+  for (std::size_t j = 0; j < jit_outputs_.size(); ++j)
+  {
+    double* target = j == 0 ? values : (j - 1 < attributes.size() ? attributes[j - 1] : nullptr);
+    jit_outputs_[j] = target ? target + base
+                             : regs_.get() + static_cast<std::size_t>(tape.outputs[j]) *
+                                 static_cast<std::size_t>(block_);
+  }
+  jit_->run(jit_inputs_.data(), jit_outputs_.data(), nullptr, static_cast<std::size_t>(n));
+  if (errors)
+  {
+    std::fill(errors + base, errors + base + n, 0u);
+  }
+  return 0;
 }
 
 std::size_t BlockRunner::evaluate(std::span<const double* const> inputs, std::size_t count,

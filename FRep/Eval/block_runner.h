@@ -50,6 +50,9 @@ public:
 
 private:
   void run_jit(std::span<const double* const> inputs, std::size_t base, int n);
+  /// run() with the kernel for a tape that cannot fail: outputs written in place.
+  std::size_t run_jit_direct(std::span<const double* const> inputs, std::size_t base, int n,
+    double* values, std::uint32_t* errors, std::span<double* const> attributes);
 
   struct AlignedFree
   {

@@ -433,3 +433,49 @@ TEST(BatchEvaluator, ExceptionsFromWorkersPropagate)
 
 } // namespace
 } // namespace frep::test
+
+namespace frep::test
+{
+namespace
+{
+
+// A tape that cannot fail, compiled, writes its outputs straight into the caller's arrays: every
+// combination of asked-for outputs gets the point evaluator's values, the errors are zero, and
+// outputs not asked for are not written anywhere the caller sees.
+TEST(BatchEvaluator, CompiledKernelWritesOutputsInPlaceWhenNothingCanFail)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0), y = b.input(1), z = b.input(2);
+  const auto f = b.op(Opcode::Sub, b.op(Opcode::Mul, x, y), b.op(Opcode::Sqrt, b.op(Opcode::Abs, z)));
+  const auto s1 = b.op(Opcode::Add, x, b.constant(0.5));
+  const auto s2 = b.op(Opcode::Max, y, z);
+  const auto tape = b.finish({ f, s1, s2 });
+  ASSERT_FALSE(tape->can_fail);
+  BatchOptions options;
+  options.threads = 2;
+  BatchEvaluator batch(tape, options);
+  EXPECT_EQ(batch.compiled(), eval::jit_available());
+  const Points pts(3, 5003, 57);
+  PointEvaluator point(tape);
+  for (int mask = 0; mask < 8; ++mask) // which of values, attribute 0, attribute 1 are asked for
+  {
+    std::vector<double> values(pts.count, 1.5), a0(pts.count, 2.5), a1(pts.count, 3.5);
+    std::vector<std::uint32_t> errors(pts.count, 9);
+    double* attributes[] = { mask & 2 ? a0.data() : nullptr, mask & 4 ? a1.data() : nullptr };
+    EXPECT_EQ(batch.evaluate(pts.pointers, pts.count, mask & 1 ? values.data() : nullptr,
+                errors.data(), attributes),
+      0u);
+    std::vector<double> out(3);
+    for (std::size_t i = 0; i < pts.count; ++i)
+    {
+      point.evaluate(pts.point(i), out);
+      ASSERT_EQ(errors[i], 0u) << mask;
+      ASSERT_TRUE(same_bits(values[i], mask & 1 ? out[0] : 1.5)) << mask << " point " << i;
+      ASSERT_TRUE(same_bits(a0[i], mask & 2 ? out[1] : 2.5)) << mask << " point " << i;
+      ASSERT_TRUE(same_bits(a1[i], mask & 4 ? out[2] : 3.5)) << mask << " point " << i;
+    }
+  }
+}
+
+} // namespace
+} // namespace frep::test

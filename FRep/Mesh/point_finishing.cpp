@@ -5,6 +5,8 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
+#include "Eval/block_runner.h"
+#include "Eval/jit_kernel.h"
 #include "Eval/tape_simplifier.h"
 #include "Eval/thread_pool.h"
 
@@ -181,8 +183,10 @@ void store_normals(const std::vector<double>& values, std::span<const std::size_
   }
 }
 
-/// Evaluates F at the probes of `ids` with `batch` and stores their normals.
-void probe_normals(BatchEvaluator& batch, std::span<const std::size_t> ids,
+/// Evaluates F at the probes of `ids` with `evaluate(inputs, count, values)` (a batch evaluator
+/// or a runner) and stores their normals.
+template<class Evaluate>
+void probe_normals(Evaluate&& evaluate, std::span<const std::size_t> ids,
   const std::array<double, 3>& h, Surface& surface, std::vector<unsigned char>& missing,
   std::array<std::vector<double>, 3>& in, std::vector<double>& values)
 {
@@ -196,7 +200,7 @@ void probe_normals(BatchEvaluator& batch, std::span<const std::size_t> ids,
   }
   values.resize(in[0].size());
   const std::array<const double*, 3> inputs{ in[0].data(), in[1].data(), in[2].data() };
-  batch.evaluate(inputs, values.size(), values.data());
+  evaluate(inputs, values.size(), values.data());
   store_normals(values, ids, h, surface, missing);
 }
 
@@ -232,7 +236,10 @@ void full_tape_normals(const std::shared_ptr<const Tape>& tape, const std::vecto
         ids.push_back(p);
       }
     }
-    probe_normals(batch, ids, h, surface, missing, in, values);
+    probe_normals(
+      [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+      { batch.evaluate(inputs, n, out); },
+      ids, h, surface, missing, in, values);
   }
 }
 
@@ -323,9 +330,28 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     std::vector<Choice> choices, brick_choices;
     TapeSimplifier simplifier;
     std::unique_ptr<BatchEvaluator> full;
+    // The bricks' simplified tapes: one runner, interval evaluator and kernel rebound per brick
+    // (a batch evaluator per brick checked its tape and compiled it into fresh memory each time).
+    std::unique_ptr<IntervalEvaluator> super_interval;
+    eval::BlockRunner runner;
+    eval::LazyKernel kernel;
+    std::shared_ptr<const Tape> kernel_tape;
     std::array<std::vector<double>, 3> in;
     std::vector<double> values;
     bool jit = true;
+
+    /// F of the simplified `brick` tape at `n` points, on this thread.
+    void evaluate_brick(const std::shared_ptr<const Tape>& brick,
+      const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+    {
+      if (kernel_tape != brick)
+      {
+        kernel.reset();
+        kernel_tape = brick;
+      }
+      runner.bind(brick, true, jit ? kernel.get(*brick, n) : nullptr);
+      runner.evaluate(inputs, n, out, nullptr, {});
+    }
 
     Participant(const std::shared_ptr<const Tape>& tape, bool jit_wanted)
       : interval(tape)
@@ -364,8 +390,11 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
       const std::size_t begin = super_begin[g], end = super_begin[g + 1];
       if (order[begin].super == none)
       {
-        probe_normals(*pt.full, std::span<const std::size_t>(ids.data() + begin, end - begin), h,
-          surface, missing, pt.in, pt.values);
+        probe_normals(
+          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+          { pt.full->evaluate(inputs, n, out); },
+          std::span<const std::size_t>(ids.data() + begin, end - begin), h, surface, missing,
+          pt.in, pt.values);
         return;
       }
       const std::span<const std::size_t> all(ids.data() + begin, end - begin);
@@ -373,10 +402,21 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
       const std::shared_ptr<const Tape> super_tape = pt.simplifier.simplify(*tape, pt.choices);
       if (!super_tape || !worth_switching(*super_tape, *tape))
       {
-        probe_normals(*pt.full, all, h, surface, missing, pt.in, pt.values);
+        probe_normals(
+          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+          { pt.full->evaluate(inputs, n, out); },
+          all, h, surface, missing, pt.in, pt.values);
         return;
       }
-      IntervalEvaluator super_interval(super_tape);
+      if (pt.super_interval)
+      {
+        pt.super_interval->rebind(super_tape, true);
+      }
+      else
+      {
+        pt.super_interval = std::make_unique<IntervalEvaluator>(super_tape);
+      }
+      IntervalEvaluator& super_interval = *pt.super_interval;
       pt.brick_choices.resize(super_tape->code.size());
       for (std::size_t b = begin; b < end;)
       {
@@ -392,8 +432,10 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
         {
           brick_tape = super_tape;
         }
-        BatchEvaluator batch(brick_tape, pt.options());
-        probe_normals(batch, group, h, surface, missing, pt.in, pt.values);
+        probe_normals(
+          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+          { pt.evaluate_brick(brick_tape, inputs, n, out); },
+          group, h, surface, missing, pt.in, pt.values);
         b = e;
       }
     });

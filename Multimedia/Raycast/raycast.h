@@ -16,7 +16,11 @@
 //     sample at that depth), is marched too. March steps are half a footprint, all the piece's
 //     steps in one batch of the SIMD evaluator: a part thinner than that is below the picture's
 //     resolution. The first sign change is refined by regula falsi (Illinois) to a thousandth
-//     of the footprint.
+//     of the footprint, every bracketed ray of the batch in lock step (one batch of points per
+//     step; each ray's steps are those it would take alone).
+//  3. A piece's interval evaluation lets the pieces inside it skip what it dominates (an
+//     IntervalFreeze: operands of decided maxima and far R-function operands keep the piece's
+//     enclosure, and what only they read is not evaluated): sound, a little looser.
 // Every value comes from the engine's exact evaluators; intervals only decide where to look,
 // never what F is, so a pruned search finds the same roots as a brute-force march at the same
 // step would.

@@ -463,9 +463,12 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
     }
   }
   Level& use = child ? *child : level;
-  // The same tape below: what this piece dominates need not be evaluated again inside it.
+  // The same tape below: what this piece dominates need not be evaluated again inside it. A
+  // freeze is made at every other depth (the other pieces pass their parent's on): making one
+  // costs about half an interval evaluation and one level adds little (meta5d 600x600 ray cast
+  // 0.92 -> 0.87 s, the four key shapes 1-6 % faster; every third depth: 0.88 s).
   LazyFreeze own(level.interval, freeze, inner);
-  LazyFreeze* below = child ? nullptr : &own;
+  LazyFreeze* below = child ? nullptr : (link && level_depth % 2 == 1 ? link : &own);
 
   const int w = x1 - x0, h = y1 - y0;
   const double width = std::max(w, h) * view_.footprint(l1);

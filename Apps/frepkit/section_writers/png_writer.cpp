@@ -122,6 +122,14 @@ bool encode(Sink& sink, std::int64_t width, std::int64_t height, const std::uint
     png_set_PLTE(png, info, const_cast<png_colorp>(indexed->palette.data()),
       static_cast<int>(indexed->palette.size()));
   }
+  else
+  {
+    // Rows filtered by Sub or Up only, not libpng's trial of all five filters per row: the
+    // demo's frames encode in 11 ms instead of 20 at the same size, the spreadsheet in 48 ms
+    // instead of 81 for 2.5 % more bytes (measured on their PNGs, zlib level 3). (Palette
+    // pictures keep libpng's default: no filter.)
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
+  }
   png_text software{};
   software.compression = PNG_TEXT_COMPRESSION_NONE;
   software.key = const_cast<png_charp>("Software");

@@ -214,20 +214,29 @@ std::size_t BlockRunner::run(std::span<const double* const> inputs, std::size_t 
   return failed;
 }
 
-void BlockRunner::run_jit(std::span<const double* const> inputs, std::size_t base, int n)
+void BlockRunner::point_jit_inputs(std::span<const double* const> inputs, std::size_t base)
 {
-  const Tape& tape = *tape_;
-  jit_inputs_.resize(tape.input_count);
+  jit_inputs_.resize(tape_->input_count);
   for (std::size_t k = 0; k < jit_inputs_.size(); ++k)
   {
     jit_inputs_[k] = inputs[k] + base;
   }
+  jit_outputs_.resize(tape_->outputs.size());
+}
+
+double* BlockRunner::output_row(std::size_t j) const
+{
+  return regs_.get() + static_cast<std::size_t>(tape_->outputs[j]) * static_cast<std::size_t>(block_);
+}
+
+void BlockRunner::run_jit(std::span<const double* const> inputs, std::size_t base, int n)
+{
+  point_jit_inputs(inputs, base);
   // The outputs land in their slots' own rows, where run() copies them from.
-  jit_outputs_.resize(tape.outputs.size());
   for (std::size_t j = 0; j < jit_outputs_.size(); ++j)
   {
-    jit_outputs_[j] = regs_.get() + static_cast<std::size_t>(tape.outputs[j]) * static_cast<std::size_t>(block_);
-    rows_[tape.outputs[j]] = jit_outputs_[j];
+    jit_outputs_[j] = output_row(j);
+    rows_[tape_->outputs[j]] = jit_outputs_[j];
   }
   jit_->run(jit_inputs_.data(), jit_outputs_.data(), lane_errors_.data(), static_cast<std::size_t>(n));
 }
@@ -237,19 +246,11 @@ std::size_t BlockRunner::run_jit_direct(std::span<const double* const> inputs, s
 {
   // No lane can fail, so no output needs a NaN put in: the kernel writes straight into the
   // caller's arrays (outputs nobody asked for go to their slot rows) and nothing is copied.
-  const Tape& tape = *tape_;
-  jit_inputs_.resize(tape.input_count);
-  for (std::size_t k = 0; k < jit_inputs_.size(); ++k)
-  {
-    jit_inputs_[k] = inputs[k] + base;
-  }
-  jit_outputs_.resize(tape.outputs.size());
+  point_jit_inputs(inputs, base);
   for (std::size_t j = 0; j < jit_outputs_.size(); ++j)
   {
     double* target = j == 0 ? values : (j - 1 < attributes.size() ? attributes[j - 1] : nullptr);
-    jit_outputs_[j] = target ? target + base
-                             : regs_.get() + static_cast<std::size_t>(tape.outputs[j]) *
-                                 static_cast<std::size_t>(block_);
+    jit_outputs_[j] = target ? target + base : output_row(j);
   }
   jit_->run(jit_inputs_.data(), jit_outputs_.data(), nullptr, static_cast<std::size_t>(n));
   if (errors)

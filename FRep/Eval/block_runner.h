@@ -50,6 +50,10 @@ public:
 
 private:
   void run_jit(std::span<const double* const> inputs, std::size_t base, int n);
+  /// The kernel's input pointers at lane `base`, and room for its output pointers.
+  void point_jit_inputs(std::span<const double* const> inputs, std::size_t base);
+  /// The register row of tape output j.
+  double* output_row(std::size_t j) const;
   /// run() with the kernel for a tape that cannot fail: outputs written in place.
   std::size_t run_jit_direct(std::span<const double* const> inputs, std::size_t base, int n,
     double* values, std::uint32_t* errors, std::span<double* const> attributes);

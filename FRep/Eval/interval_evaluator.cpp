@@ -791,6 +791,15 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
     slots_[s] = r.v;
     may_nan_[s] = r.nan ? 1 : 0;
   };
+  // Each instruction's result, for make_freeze (only when asked: `inner`).
+  const auto record = [&](std::size_t at, const Range& r)
+  {
+    if (inner)
+    {
+      inner->value[at] = r.v;
+      inner->nan[at] = r.nan ? 1 : 0;
+    }
+  };
   // An immediate operand: the constant's range (a NaN constant may be anything, as a Const slot).
   const auto immediate = [](double v)
   { return std::isnan(v) ? whole(true) : Range{ Interval::point(v), false }; };
@@ -821,11 +830,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       {
         const Range r{ outer->value[at], outer->nan[at] != 0 };
         put(ins.out, r);
-        if (inner)
-        {
-          inner->value[at] = r.v;
-          inner->nan[at] = r.nan ? 1 : 0;
-        }
+        record(at, r);
       }
       continue;
     }
@@ -848,11 +853,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       const Interval& in = box[static_cast<std::size_t>(ins.index)];
       const Range r = (in.lo <= in.hi) ? Range{ in, false } : whole(true);
       put(ins.out, r);
-      if (inner)
-      {
-        inner->value[at] = r.v;
-        inner->nan[at] = r.nan ? 1 : 0;
-      }
+      record(at, r);
       continue;
     }
     const int operands = operands_by_opcode[static_cast<std::size_t>(op)];
@@ -1071,11 +1072,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       choices[at] = r.v.lo != 0.0 ? Choice::True : Choice::False;
     }
     put(ins.out, r);
-    if (inner)
-    {
-      inner->value[at] = r.v;
-      inner->nan[at] = r.nan ? 1 : 0;
-    }
+    record(at, r);
   }
   if (!tape.outputs.empty())
   {

@@ -44,6 +44,23 @@ double magnitude(const Interval& i)
   return std::max(std::fabs(i.lo), std::fabs(i.hi));
 }
 
+/// The instructions whose operands a box may dominate: max/min and the R-functions.
+bool joins(Opcode op)
+{
+  switch (op)
+  {
+    case Opcode::Max:
+    case Opcode::Min:
+    case Opcode::Union:
+    case Opcode::UnionPlain:
+    case Opcode::Intersect:
+    case Opcode::IntersectPlain:
+      return true;
+    default:
+      return false;
+  }
+}
+
 /// Whether `x` is dominated by `y` in the instruction `op` over the box (see IntervalFreeze):
 /// a decided max/min, or an R-function operand on the far side of zero from the result's
 /// deciding side, at least twice the other's magnitude.
@@ -133,8 +150,7 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
       }
     }
     const Opcode op = tape.code[j].op;
-    if (op != Opcode::Max && op != Opcode::Min && op != Opcode::Union &&
-        op != Opcode::UnionPlain && op != Opcode::Intersect && op != Opcode::IntersectPlain)
+    if (!joins(op))
     {
       continue;
     }
@@ -154,7 +170,7 @@ bool IntervalEvaluator::make_freeze(const IntervalFreeze* outer, IntervalFreeze&
   for (std::size_t i = 0; i < count; ++i)
   {
     const std::size_t j = instruction(i);
-    inner.action[j] = outer ? outer->action[j] : IntervalFreeze::Evaluate;
+    inner.action[j] = outer ? outer->action[j] : std::uint8_t{ IntervalFreeze::Evaluate };
   }
   for (const std::uint32_t p : losers_)
   {

@@ -26,7 +26,7 @@ void BoxWalker::Level::rebind(std::shared_ptr<const Tape> t)
   choices.resize(tape->code.size());
   simplifiable = may_simplify(*tape);
   kernel.reset();
-  attempts = successes = 0;
+  throttle = {};
 }
 
 BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
@@ -66,7 +66,8 @@ void BoxWalker::run(const CellBox& block, Piece& piece)
 void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFreeze* link)
 {
   Piece& piece = builder_.piece();
-  const bool simplify = options_.cull && options_.simplify && level.worth_trying();
+  const bool simplify = options_.cull && options_.simplify && level.simplifiable &&
+    level.throttle.worth_trying();
   if (options_.cull)
   {
     ++piece.boxes_tested;
@@ -93,10 +94,10 @@ void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFr
   if (simplify)
   {
     std::shared_ptr<const Tape> tape = simplifier_.simplify(*level.tape, level.choices);
-    ++level.attempts;
-    if (tape && worth_switching(*tape, *level.tape))
+    const bool paid = tape && worth_switching(*tape, *level.tape);
+    level.throttle.record(paid);
+    if (paid)
     {
-      ++level.successes;
       below = &level_below(depth, std::move(tape));
     }
   }

@@ -210,12 +210,7 @@ private:
     std::vector<Choice> choices;
     bool simplifiable = false; // may_simplify(*tape)
     eval::LazyKernel kernel;   // the tape compiled, once its samples pay for it
-    // Simplifications tried from this level and how many paid: a tape whose boxes never
-    // simplify (the Homotopic Fun blend: R-functions) stops paying for the attempt (a copy of
-    // the tape per box, ~3x an interval evaluation), as in the ray caster.
-    int attempts = 0;
-    int successes = 0;
-    bool worth_trying() const { return simplifiable && (attempts < 16 || successes * 8 >= attempts); }
+    SimplifyThrottle throttle; // the Homotopic Fun blend's boxes never simplify
 
     explicit Level(std::shared_ptr<const Tape> t);
     void rebind(std::shared_ptr<const Tape> t); // a simplified tape (trusted)

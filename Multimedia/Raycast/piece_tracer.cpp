@@ -133,16 +133,14 @@ void PieceTracer::evaluate_points(Level& level)
 void PieceTracer::bracket(std::size_t ray, double outside, double f_out, bool out_known,
   double inside, double f_in, bool in_known)
 {
-  Bracket b;
-  b.ray = ray;
-  b.outside = outside;
-  b.f_out = f_out;
-  b.out_known = out_known;
-  b.inside = inside;
-  b.f_in = f_in;
-  b.in_known = in_known;
-  b.tolerance = options_.tolerance * view_.footprint(inside);
-  brackets_.push_back(b);
+  brackets_.push_back({ .ray = ray,
+    .outside = outside,
+    .f_out = f_out,
+    .inside = inside,
+    .f_in = f_in,
+    .tolerance = options_.tolerance * view_.footprint(inside),
+    .out_known = out_known,
+    .in_known = in_known });
 }
 
 void PieceTracer::refine_brackets(Level& level)
@@ -455,10 +453,10 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   if (record)
   {
     std::shared_ptr<const Tape> simplified = simplifier_.simplify(*level.tape, level.choices);
-    ++level.attempts;
-    if (simplified && worth_switching(*simplified, *level.tape))
+    const bool paid = simplified && worth_switching(*simplified, *level.tape);
+    level.throttle.record(paid);
+    if (paid)
     {
-      ++level.successes;
       child.emplace(std::move(simplified));
     }
   }

@@ -8,7 +8,6 @@
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
-#include "Eval/point_evaluator.h"
 #include "Eval/tape_simplifier.h"
 #include "Eval/thread_pool.h"
 
@@ -84,9 +83,8 @@ private:
     bool simplifiable = false;
     // Simplifications tried from this level and how many paid: a tape whose pieces never
     // simplify (R-function blends) stops paying for the attempt.
-    int attempts = 0;
-    int successes = 0;
-    bool worth_trying() const { return simplifiable && (attempts < 16 || successes * 8 >= attempts); }
+    SimplifyThrottle throttle;
+    bool worth_trying() const { return simplifiable && throttle.worth_trying(); }
     explicit Level(std::shared_ptr<const Tape> t);
   };
   struct Ray

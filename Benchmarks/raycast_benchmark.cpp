@@ -13,7 +13,7 @@
 #include "Render/mesh_renderer.h"
 
 #include "Compiler/model.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 #include "Mesh/surface.h"
 
 #include <chrono>
@@ -76,17 +76,13 @@ int main(int argc, char** argv)
       return 1;
     }
   }
-  std::ifstream in(argv[1]);
-  std::stringstream text;
-  text << in.rdbuf();
-  const frep::ParseResult parsed = frep::parse_program(text.str(), argv[1]);
-  if (!parsed.ok())
+  const frep::LoadedModel loaded = frep::load_model(frep::ModelSource::file(argv[1]));
+  if (!loaded.ok())
   {
-    std::cerr << argv[1] << ": does not parse\n";
+    std::cerr << loaded.message();
     return 1;
   }
-  const int object = frep::ast::select_default_object(*parsed.program);
-  const auto model = frep::Model::compile(parsed.program, object).model;
+  const auto model = loaded.model;
   frep::Specialisation spec;
   spec.fixed.assign(static_cast<std::size_t>(model->x_dim()), std::nullopt);
   for (std::size_t k = 0; k < fix.size() && k + 3 < spec.fixed.size(); ++k)

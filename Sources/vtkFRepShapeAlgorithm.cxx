@@ -6,8 +6,7 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 
-#include "Compiler/model.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 #include "Shapes/shape_functions.h"
 
 #include <cmath>
@@ -118,22 +117,16 @@ int vtkFRepShapeAlgorithm::RequestData(
     vtkErrorMacro(<< "FunctionName: " << e);
     return 1;
   }
-  frep::ParseOptions options;
-  options.user_functions = registry;
-  const frep::ParseResult parsed =
-    frep::parse_program(frep::shapes::wrapper_program(name), "<" + name + ">", options);
-  if (!parsed.ok())
+  frep::LoadOptions options;
+  options.functions = registry;
+  frep::LoadedModel loaded = frep::load_model(
+    frep::ModelSource::from_text(frep::shapes::wrapper_program(name), "<" + name + ">"), options);
+  if (!loaded.ok())
   {
-    vtkErrorMacro(<< "FunctionName '" << name << "': " << parsed.diagnostics.front().message);
+    vtkErrorMacro(<< "FunctionName '" << name << "': " << loaded.diagnostics.front().message);
     return 1;
   }
-  frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, 0);
-  if (!compiled.model)
-  {
-    vtkErrorMacro(<< "the model of '" << name << "' could not be compiled");
-    return 1;
-  }
-  output->SetModel(compiled.model);
+  output->SetModel(loaded.model);
   double ranges[6];
   this->Ranges(b, have, ranges);
   for (int k = 0; k < 3; ++k)

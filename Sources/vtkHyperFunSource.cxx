@@ -1,6 +1,5 @@
 #include "vtkHyperFunSource.h"
 
-#include "Language/user_library.h"
 #include "Shapes/tape_function.h"
 
 #include "vtkFRepInformation.h"
@@ -11,8 +10,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include "Compiler/model.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 
 #include <fstream>
 #include <sstream>
@@ -268,83 +266,38 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   this->CachedModel.reset();
   this->CachedProgram.reset();
 
-  frep::ParseOptions parseOptions;
-  if (!this->UserLibraries.empty() || !this->ShapeNames.empty())
+  // The one loading call of every tool (Compiler/load_model.h): .vm tapes by the file name's
+  // extension, HyperFun library files and shared libraries, the same messages as frepkit's.
+  frep::LoadOptions options;
+  options.object = objectName;
+  options.libraries = this->UserLibraries;
+  if (!this->ShapeNames.empty())
   {
-    auto registry = std::make_shared<frep::UserFunctionRegistry>();
-    for (const std::string& path : this->UserLibraries)
-    {
-      const frep::UserLibraryResult loaded = frep::load_user_library(path, *registry);
-      if (!loaded.ok())
-      {
-        vtkErrorMacro(<< loaded.error);
-        return nullptr;
-      }
-    }
+    auto shapes = std::make_shared<frep::UserFunctionRegistry>();
     for (std::size_t i = 0; i < this->ShapeNames.size(); ++i)
     {
       const std::string e =
-        registry->add(frep::shapes::tape_function(this->ShapeNames[i], this->ShapeTapes[i]));
+        shapes->add(frep::shapes::tape_function(this->ShapeNames[i], this->ShapeTapes[i]));
       if (!e.empty())
       {
         vtkErrorMacro(<< "AddShape: " << e);
         return nullptr;
       }
     }
-    parseOptions.user_functions = registry;
+    options.functions = shapes;
   }
-  const frep::ParseResult parsed = frep::parse_program(text, sourceName, parseOptions);
-  this->CachedProgram = parsed.program;
-  if (!parsed.ok())
+  frep::LoadedModel loaded =
+    frep::load_model(frep::ModelSource::from_text(text, sourceName), options);
+  this->CachedProgram = loaded.program;
+  if (!loaded.ok())
   {
-    for (const frep::Diagnostic& d : parsed.diagnostics)
+    for (const frep::Diagnostic& d : loaded.diagnostics)
     {
       vtkErrorMacro(<< d.format());
     }
     return nullptr;
   }
-  const frep::ast::Program& program = *parsed.program;
-  if (program.objects.empty())
-  {
-    vtkErrorMacro(<< sourceName << ": the file defines no object");
-    return nullptr;
-  }
-  int object = -1;
-  if (objectName.empty())
-  {
-    object = frep::ast::select_default_object(program);
-  }
-  else
-  {
-    object = frep::ast::find_object(program, objectName);
-    if (object < 0)
-    {
-      std::string names;
-      for (const frep::ast::Object& o : program.objects)
-      {
-        names += (names.empty() ? "" : ", ") + o.name;
-      }
-      vtkErrorMacro(<< sourceName << ": no object called '" << objectName
-                    << "'; the objects are: " << names);
-      return nullptr;
-    }
-  }
-
-  frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, object);
-  if (!compiled.model)
-  {
-    for (const frep::Diagnostic& d : compiled.diagnostics)
-    {
-      vtkErrorMacro(<< d.format());
-    }
-    if (compiled.diagnostics.empty())
-    {
-      vtkErrorMacro(<< sourceName << ": object '" << program.objects[object].name
-                    << "' could not be compiled");
-    }
-    return nullptr;
-  }
-  this->CachedModel = std::move(compiled.model);
+  this->CachedModel = std::move(loaded.model);
   this->CachedText = std::move(text);
   this->CachedSourceName = std::move(sourceName);
   this->CachedObjectName = objectName;

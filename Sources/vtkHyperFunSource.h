@@ -74,7 +74,8 @@ public:
 
   ///@{
   /**
-   * A .hf file to read (default none). When set, it wins over ModelText.
+   * A model file to read (default none): HyperFun (.hf), or a tape of the field's benchmark
+   * format (.vm: one object my_model, F = -value). When set, it wins over ModelText.
    */
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
@@ -123,8 +124,9 @@ public:
   ///@{
   /**
    * User functions the program may call (Documentation/user-functions.md). AddUserLibrary: a
-   * shared library implementing frepkit_user.h (loaded when the model is built; a failure is
-   * an error naming the library and the function). AddShape: the object (e.g. the output of
+   * HyperFun file (.hf) whose objects the model calls like its own earlier objects, or a shared
+   * library implementing frepkit_user.h (loaded when the model is built; a failure is an error
+   * naming the library; call Modified() after a library file changes). AddShape: the object (e.g. the output of
    * vtkPolyDataToFRep, or any k-D vtkFRepObject) as the function `name(x)` over its free
    * coordinates, with its enclosures and gradients; the object is used as it is when added
    * (call AddShape again after it changes).

@@ -1,6 +1,6 @@
 #include "ModelAnalysis.h"
 
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 
 #include <chrono>
 
@@ -8,7 +8,7 @@ namespace frepstudio
 {
 
 ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
-  std::uint64_t generation, std::shared_ptr<const frep::UserFunctionRegistry> users)
+  std::uint64_t generation, const frep::LoadOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   ModelAnalysis analysis;
@@ -16,9 +16,9 @@ ModelAnalysis analyse_model(const std::string& text, const std::string& file_nam
   analysis.file_name = file_name;
   analysis.ranges = CoordinateRanges::from_model_text(text);
 
-  frep::ParseOptions options;
-  options.user_functions = std::move(users);
-  frep::ParseResult parsed = frep::parse_program(text, file_name, options);
+  // The engine's loading call, as every tool uses it: .vm by the name's extension, the libraries.
+  frep::LoadedProgram parsed =
+    frep::load_program(frep::ModelSource::from_text(text, file_name), options);
   analysis.diagnostics = std::move(parsed.diagnostics);
   if (parsed.ok())
   {

@@ -4,6 +4,7 @@
 
 #include "CoordinateRanges.h"
 
+#include "Compiler/load_model.h"
 #include "Compiler/model.h"
 #include "Language/ast.h"
 #include "Language/diagnostic.h"
@@ -40,9 +41,9 @@ struct ModelAnalysis
   bool ok() const { return program != nullptr && diagnostics.empty(); }
 };
 
-/// Parses `text` and compiles every object; `users`: the user functions it may call
-/// (--library, Documentation/user-functions.md), or null.
+/// Parses `text` (a .vm tape when `file_name` ends in .vm) and compiles every object; `options`:
+/// the libraries and functions it may call (--library, --shape; Documentation/user-functions.md).
 ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
-  std::uint64_t generation, std::shared_ptr<const frep::UserFunctionRegistry> users = nullptr);
+  std::uint64_t generation, const frep::LoadOptions& options = {});
 
 } // namespace frepstudio

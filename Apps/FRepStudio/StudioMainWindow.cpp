@@ -371,8 +371,8 @@ void StudioMainWindow::startAnalysis()
     if (result.generation == analysis_generation_)
       applyAnalysis(std::move(result));
   });
-  watcher->setFuture(QtConcurrent::run([text, name, generation, users = users_]
-    { return analyse_model(text, name, generation, users); }));
+  watcher->setFuture(QtConcurrent::run([text, name, generation, options = loadOptions_]
+    { return analyse_model(text, name, generation, options); }));
 }
 
 void StudioMainWindow::applyAnalysis(ModelAnalysis analysis)
@@ -629,17 +629,28 @@ bool StudioMainWindow::setUserInputs(const UserInputs& inputs, QString* error)
       out.push_back(item.toStdString());
     return out;
   };
-  auto registry = std::make_shared<frep::UserFunctionRegistry>();
-  const std::string e = frepkit::add_user_inputs(
-    strings(inputs.libraries), strings(inputs.shapes), inputs.unsignedDistance, *registry);
+  auto shapes = std::make_shared<frep::UserFunctionRegistry>();
+  const std::string e =
+    frepkit::add_user_inputs({}, strings(inputs.shapes), inputs.unsignedDistance, *shapes);
   if (!e.empty())
   {
     if (error)
       *error = QString::fromStdString(e);
     return false;
   }
-  const bool none = inputs.libraries.isEmpty() && inputs.shapes.isEmpty();
-  users_ = none ? nullptr : std::move(registry);
+  frep::LoadOptions options;
+  options.libraries = strings(inputs.libraries);
+  options.functions = inputs.shapes.isEmpty() ? nullptr : std::move(shapes);
+  // The libraries are loaded with every analysis; load them once here to refuse a bad one now.
+  const frep::LoadedProgram check =
+    frep::load_program(frep::ModelSource::from_text("", "<libraries>"), options);
+  if (!check.ok())
+  {
+    if (error)
+      *error = QString::fromStdString(frep::format_diagnostics(check.diagnostics));
+    return false;
+  }
+  loadOptions_ = std::move(options);
   userInputs_ = absoluteUserInputs(inputs);
   if (!editor_->toPlainText().isEmpty())
     startAnalysis(); // a model that calls the new names parses now

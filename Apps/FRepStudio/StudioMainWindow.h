@@ -108,7 +108,7 @@ protected:
   void closeEvent(QCloseEvent* event) override;
 
 private:
-  std::shared_ptr<const frep::UserFunctionRegistry> users_;
+  frep::LoadOptions loadOptions_; // --library and --shape, as the engine loads them
   UserInputs userInputs_; // absolute paths, for the export
   void buildMenus();
   void startAnalysis();

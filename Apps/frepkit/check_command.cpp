@@ -24,7 +24,7 @@ CLI::App* add_check_command(CLI::App& app, CheckOptions& options)
 
 int run_check(const CheckOptions& options)
 {
-  const LoadedProgram loaded = load_program(options.model, options.user);
+  const frep::LoadedProgram loaded = load_program(options.model, options.user);
   if (!loaded.program)
   {
     std::cerr << frep::format_diagnostics(loaded.diagnostics);
@@ -39,7 +39,11 @@ int run_check(const CheckOptions& options)
   for (std::size_t i = 0; i < program.objects.size(); ++i)
   {
     const frep::ast::Object& object = program.objects[i];
-    std::cout << (static_cast<int>(i) == selected ? "* " : "  ") << describe_object(object);
+    std::cout << (static_cast<int>(i) == selected ? "* " : "  ") << frep::describe_object(object);
+    if (static_cast<int>(i) < program.first_own_object)
+    {
+      std::cout << "  from library " << object.file;
+    }
     const frep::Model::CompileResult compiled =
       frep::Model::compile(loaded.program, static_cast<int>(i));
     if (!compiled.model)

@@ -49,7 +49,7 @@ struct PointOutput
 class EvalRun
 {
 public:
-  EvalRun(const EvalOptions& options, const LoadedProgram& loaded, int object_index)
+  EvalRun(const EvalOptions& options, const frep::LoadedProgram& loaded, int object_index)
     : options_(options)
     , loaded_(loaded)
     , object_(loaded.program->objects[static_cast<std::size_t>(object_index)])
@@ -158,7 +158,7 @@ private:
         write_value(previous_, out); // hfp: a failing point keeps the previous point's value
         return;
       }
-      out << format_error(loaded_.path, *result.error) << '\n';
+      out << format_error(loaded_.file, *result.error) << '\n';
       return;
     }
     PointOutput point;
@@ -183,7 +183,7 @@ private:
   }
 
   const EvalOptions& options_;
-  const LoadedProgram& loaded_;
+  const frep::LoadedProgram& loaded_;
   const frep::ast::Object& object_;
   frep::Interpreter interpreter_;
   std::unique_ptr<frep::BatchEvaluator> batch_;
@@ -230,20 +230,11 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options)
 
 int run_eval(const EvalOptions& options)
 {
-  const LoadedProgram loaded = load_program(options.model, options.user);
-  if (!loaded.program)
-  {
-    std::cerr << frep::format_diagnostics(loaded.diagnostics);
-    throw UserError(options.model + ": " + std::to_string(loaded.diagnostics.size()) +
-      (loaded.diagnostics.size() == 1 ? " error" : " errors"));
-  }
+  const frep::LoadedProgram loaded = load_program(options.model, options.user);
+  require_parsed(loaded);
   const int object_index = choose_object(loaded, options.object);
   const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
-  if (options.parameters.size() > static_cast<std::size_t>(object.a_dim))
-  {
-    std::cerr << "frepkit: warning: " << options.parameters.size() << " parameters given, "
-              << object.name << " has a[" << object.a_dim << "]: the extra ones are ignored\n";
-  }
+  warn_extra_parameters(object, options.parameters.size());
 
   std::ifstream file;
   std::istream* in = &std::cin;

@@ -210,17 +210,25 @@ int run_hfp(const std::vector<std::string>& args)
   {
     throw UserError("File: " + a.model + " not found");
   }
-  const LoadedProgram loaded = load_program(a.model);
-  require_parsed(loaded);
+  const frep::LoadedProgram program = load_program(a.model);
+  require_parsed(program);
   // hfp's rule: the object named exactly (names are stored in lower case), else the first.
   const int object_index =
-    frep::ast::select_object(*loaded.program, a.object, frep::ast::NameMatch::Exact);
+    frep::ast::select_object(*program.program, a.object, frep::ast::NameMatch::Exact);
   if (object_index < 0)
   {
     throw UserError(a.model + ": the file defines no object");
   }
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
-  const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
+  frep::LoadOptions by_index;
+  by_index.object = program.program->objects[static_cast<std::size_t>(object_index)].name;
+  const frep::LoadedModel loaded = frep::compile_object(program, by_index);
+  if (!loaded.ok())
+  {
+    std::cerr << loaded.message();
+    throw UserError(a.model + ": the object cannot be compiled");
+  }
+  const frep::ast::Object& object = program.program->objects[static_cast<std::size_t>(object_index)];
+  const std::shared_ptr<const frep::Model> model = loaded.model;
   timer.stage("Time to Read and Parse File");
 
   const CoordinateMapping mapping = hfp_mapping(a, object);

@@ -56,19 +56,16 @@ mapping::Spec load_spec(const MapOptions& options, const std::string& mapping_te
 }
 
 // The object (--object, else the mapping's, else the default), compiled, and its a[] values.
-void load_model(const MapOptions& options, MapInputs& in)
+void load_mapped_model(const MapOptions& options, MapInputs& in)
 {
-  const LoadedProgram program = load_program(options.model, options.user);
-  require_parsed(program);
   std::optional<std::string> object_name = options.object;
   if (!object_name && !in.spec.object.empty())
   {
     object_name = in.spec.object;
   }
-  const int object_index = choose_object(program, object_name);
-  in.model = compile_object(program, object_index);
   in.parameters = options.parameters.empty() ? in.spec.parameters : options.parameters;
-  warn_extra_parameters(program.program->objects[object_index], in.parameters.size());
+  in.model =
+    frepkit::load_model(options.model, options.user, object_name, in.parameters.size()).model;
 }
 
 // The model's coordinates x1..xn over hfp's default box, and the plan of the mapping for them.
@@ -109,7 +106,7 @@ MapInputs load_inputs(const MapOptions& options)
   MapInputs in;
   in.mapping_text = read_file(options.mapping, "mapping file");
   in.spec = load_spec(options, in.mapping_text);
-  load_model(options, in);
+  load_mapped_model(options, in);
   plan_mapping(options, in);
   return in;
 }

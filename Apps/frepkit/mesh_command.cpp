@@ -79,11 +79,9 @@ int run_mesh(const MeshOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   const MeshFormat format = require_mesh_format(options.output);
-  const LoadedProgram loaded = load_program(options.model, options.user);
-  require_parsed(loaded);
-  const int object_index = choose_object(loaded, options.object);
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
-  warn_extra_parameters(object, options.parameters.size());
+  const frep::LoadedModel loaded =
+    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
 
   CoordinateMapping mapping;
   if (options.map)
@@ -110,7 +108,7 @@ int run_mesh(const MeshOptions& options)
   }
   const frep::mesh::Grid grid = make_grid(options.box, options.grid, 3);
 
-  const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
+  const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;
   job.start = start;
   job.tape = model->specialise(mapping.specialisation(options.parameters));

@@ -1,100 +1,89 @@
 #include "model_loading.h"
 
-#include "Language/parser.h"
-#include "Language/vm_reader.h"
 #include "user_error.h"
 
-#include <fstream>
 #include <iostream>
-#include <iterator>
-#include <sstream>
 
 namespace frepkit
 {
-
-LoadedProgram load_program(const std::string& path, const UserInputs& inputs)
+namespace
 {
-  frep::ParseOptions parse_options;
-  parse_options.user_functions = load_user_inputs(inputs);
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
+
+/// One message without a position (a file that cannot be read, no such object) is the error
+/// itself; anything else is printed in full (file:line:col) and counted.
+[[noreturn]] void fail(const std::string& path, const std::vector<frep::Diagnostic>& diagnostics)
+{
+  if (diagnostics.size() == 1 && !diagnostics.front().location.valid())
   {
-    throw UserError(path + ": cannot open the model file");
+    throw UserError(diagnostics.front().file + ": " + diagnostics.front().message);
   }
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad())
-  {
-    throw UserError(path + ": cannot read the model file");
-  }
-  // .vm tapes (the Prospero Challenge's format) read as a one-object HyperFun program (they
-  // call no user function).
-  frep::ParseResult parsed = frep::is_vm_file(path) ? frep::parse_vm(text, path)
-                                                    : frep::parse_program(text, path, parse_options);
-  return LoadedProgram{ path, parsed.program, std::move(parsed.diagnostics) };
+  std::cerr << frep::format_diagnostics(diagnostics);
+  throw UserError(path + ": " + std::to_string(diagnostics.size()) +
+                  (diagnostics.size() == 1 ? " error" : " errors"));
 }
 
-std::string describe_object(const frep::ast::Object& object)
+} // namespace
+
+frep::LoadOptions load_options(const UserInputs& inputs, const std::optional<std::string>& object)
 {
-  std::ostringstream out;
-  out << object.name << "(x[" << object.x_dim << "], a[" << object.a_dim << "], s[" << object.s_dim
-      << "])";
-  return out.str();
+  frep::LoadOptions options;
+  options.object = object.value_or(std::string());
+  options.libraries = inputs.libraries;
+  options.functions = load_shape_inputs(inputs);
+  return options;
 }
 
-int choose_object(const LoadedProgram& loaded, const std::optional<std::string>& requested)
+frep::LoadedModel load_model(const std::string& path, const UserInputs& inputs,
+  const std::optional<std::string>& object, std::size_t parameter_count)
 {
-  const frep::ast::Program& program = *loaded.program;
-  if (program.objects.empty())
+  frep::LoadedModel loaded =
+    frep::load_model(frep::ModelSource::file(path), load_options(inputs, object));
+  if (!loaded.ok())
   {
-    throw UserError(loaded.path + ": the file defines no object");
+    fail(path, loaded.diagnostics);
   }
-  if (requested)
-  {
-    const int found = frep::ast::find_object(program, *requested);
-    if (found < 0)
-    {
-      std::string names;
-      for (const frep::ast::Object& object : program.objects)
-      {
-        names += names.empty() ? "" : ", ";
-        names += object.name;
-      }
-      throw UserError(
-        loaded.path + ": no object named '" + *requested + "' (objects: " + names + ")");
-    }
-    return found;
-  }
-  return frep::ast::select_default_object(program);
+  warn_extra_parameters(loaded.program->objects[static_cast<std::size_t>(loaded.object)],
+    parameter_count);
+  return loaded;
 }
 
-void require_parsed(const LoadedProgram& loaded)
+frep::LoadedProgram load_program(const std::string& path, const UserInputs& inputs)
 {
-  if (loaded.program)
+  frep::LoadedProgram loaded = frep::load_program(frep::ModelSource::file(path), load_options(inputs));
+  // Reading failed (the file or a library): no text was parsed, so there is nothing to report
+  // position by position.
+  if (!loaded.ok() && !loaded.diagnostics.empty() && !loaded.diagnostics.front().location.valid())
   {
-    return;
+    fail(path, loaded.diagnostics);
   }
-  std::cerr << frep::format_diagnostics(loaded.diagnostics);
-  throw UserError(loaded.path + ": " + std::to_string(loaded.diagnostics.size()) +
-                  (loaded.diagnostics.size() == 1 ? " error" : " errors"));
+  return loaded;
 }
 
-std::shared_ptr<const frep::Model> compile_object(const LoadedProgram& loaded, int object_index)
+void require_parsed(const frep::LoadedProgram& loaded)
 {
-  frep::Model::CompileResult compiled = frep::Model::compile(loaded.program, object_index);
-  if (!compiled.model)
+  if (!loaded.ok())
   {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
-    throw UserError(loaded.path + ": the object cannot be compiled");
+    fail(loaded.file, loaded.diagnostics);
   }
-  return compiled.model;
+}
+
+int choose_object(const frep::LoadedProgram& loaded, const std::optional<std::string>& requested)
+{
+  std::vector<frep::Diagnostic> diagnostics;
+  const int index = frep::choose_object(loaded, requested.value_or(std::string()), diagnostics);
+  if (index < 0)
+  {
+    fail(loaded.file, diagnostics);
+  }
+  return index;
 }
 
 void warn_extra_parameters(const frep::ast::Object& object, std::size_t given)
 {
-  if (given > static_cast<std::size_t>(object.a_dim))
+  if (const std::string warning = frep::extra_parameters_warning(object.name, object.a_dim, given);
+      !warning.empty())
   {
-    std::cerr << "frepkit: warning: " << given << " parameters given, " << object.name << " has a["
-              << object.a_dim << "]: the extra ones are ignored\n";
+    std::cerr << "frepkit: warning: " << warning << '\n';
   }
 }
 

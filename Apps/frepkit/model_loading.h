@@ -1,48 +1,41 @@
-// Reading and parsing a model file and choosing its object, shared by the subcommands.
+// frepkit's side of loading a model: the engine's one loading call (Compiler/load_model.h) with
+// the command line's --library, --shape and --object, its diagnostics printed and turned into a
+// UserError (exit code 1).
 #pragma once
 
-#include "Compiler/model.h"
-#include "Language/ast.h"
-#include "Language/diagnostic.h"
+#include "Compiler/load_model.h"
 #include "user_inputs.h"
 
-#include <iosfwd>
-#include <memory>
+#include <cstddef>
 #include <optional>
 #include <string>
 
 namespace frepkit
 {
 
-struct LoadedProgram
-{
-  std::string path;
-  std::shared_ptr<const frep::ast::Program> program;
-  std::vector<frep::Diagnostic> diagnostics; ///< parse errors (program is null then)
-};
+/// The engine's load options for --library (HyperFun .hf files and shared libraries), --shape
+/// and --object.
+frep::LoadOptions load_options(const UserInputs& inputs,
+  const std::optional<std::string>& object = std::nullopt);
 
-/// Reads `path` as bytes (any content, even binary) and parses it. Throws UserError when the
-/// file cannot be read; parse errors are returned in diagnostics.
-/// `inputs`: the user libraries and shapes the model may call (--library, --shape).
-LoadedProgram load_program(const std::string& path, const UserInputs& inputs = {});
+/// Loads and compiles the model (frep::load_model): the object `object` names, else the default
+/// (my_model, else the first). On failure prints every diagnostic (file:line:col) on standard
+/// error and throws UserError. Warns when more a[] values are given than the object has.
+frep::LoadedModel load_model(const std::string& path, const UserInputs& inputs,
+  const std::optional<std::string>& object, std::size_t parameter_count = 0);
 
-/// The object to evaluate: `requested` (case-insensitive), else my_model, else the first object
-/// (the original's rule). A requested name that does not exist is a UserError listing the
-/// objects (the original silently fell back; a typo should not evaluate the wrong object).
-/// Throws UserError when the file defines no object.
-int choose_object(const LoadedProgram& loaded, const std::optional<std::string>& requested);
+/// Reads and parses only (check, eval and hfp look at the program themselves). A file or library
+/// that cannot be read is a UserError; parse errors are returned in diagnostics.
+frep::LoadedProgram load_program(const std::string& path, const UserInputs& inputs = {});
 
-/// Throws UserError after printing every parse diagnostic (file:line:col) on standard error
-/// when the program did not parse.
-void require_parsed(const LoadedProgram& loaded);
+/// Prints every parse diagnostic and throws UserError when the program did not parse.
+void require_parsed(const frep::LoadedProgram& loaded);
 
-/// Compiles the chosen object; a failure prints the compiler's diagnostics and throws UserError.
-std::shared_ptr<const frep::Model> compile_object(const LoadedProgram& loaded, int object_index);
+/// The object `requested` names, else the default; UserError when there is none (the message
+/// lists the objects).
+int choose_object(const frep::LoadedProgram& loaded, const std::optional<std::string>& requested);
 
 /// Prints a warning when more a[] values are given than the object has.
 void warn_extra_parameters(const frep::ast::Object& object, std::size_t given);
-
-/// "name(x[3], a[1], s[1])"
-std::string describe_object(const frep::ast::Object& object);
 
 } // namespace frepkit

@@ -117,11 +117,9 @@ int run_render(const RenderOptions& options)
   const std::array<float, 3> colour = linear_rgb(options.colour, "--colour");
   const std::array<float, 3> background = linear_rgb(options.background, "--background");
 
-  const LoadedProgram loaded = load_program(options.model, options.user);
-  require_parsed(loaded);
-  const int object_index = choose_object(loaded, options.object);
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
-  warn_extra_parameters(object, options.parameters.size());
+  const frep::LoadedModel loaded =
+    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
   const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
   if (mapping.free.size() != 3)
   {
@@ -129,7 +127,7 @@ int run_render(const RenderOptions& options)
                     std::to_string(mapping.free.size()) + " are free)");
   }
   const frep::mesh::Grid grid = make_grid(options.box, {}, 3);
-  const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
+  const std::shared_ptr<const frep::Model> model = loaded.model;
 
   frep::raycast::Shape shape;
   shape.tape = model->specialise(mapping.specialisation(options.parameters));

@@ -162,18 +162,16 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
 int run_slice(const SliceOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
-  const LoadedProgram loaded = load_program(options.model, options.user);
-  require_parsed(loaded);
-  const int object_index = choose_object(loaded, options.object);
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(object_index)];
-  warn_extra_parameters(object, options.parameters.size());
+  const frep::LoadedModel loaded =
+    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
   const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
   const int axes = static_cast<int>(mapping.free.size());
   const SliceKind kind = slice_kind(options.output, mapping.free.size());
   require_available(kind, options.output);
   const frep::mesh::Grid grid = make_grid(options.box, options.grid, axes);
 
-  const std::shared_ptr<const frep::Model> model = compile_object(loaded, object_index);
+  const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =
     model->specialise(mapping.specialisation(options.parameters));
   const bool colours = frep::tape_sets_colours(*tape, object.s_dim);

@@ -11,8 +11,9 @@ namespace frepkit
 void add_user_input_options(CLI::App* command, UserInputs& inputs)
 {
   command->add_option("--library", inputs.libraries,
-    "A user library (shared object implementing frepkit_user.h) whose functions the model may "
-    "call by name; repeatable")
+    "A library the model may call: a HyperFun file (.hf) whose objects it calls like its own, "
+    "or a shared object implementing frepkit_user.h whose functions it calls by name; "
+    "repeatable")
     ->allow_extra_args(false);
   command->add_option("--shape", inputs.shapes,
     "name=FILE: a closed triangle mesh (.stl, .obj, .ply, .vtp: signed distance, >= 0 inside) "
@@ -23,15 +24,14 @@ void add_user_input_options(CLI::App* command, UserInputs& inputs)
     "Accept open or non-manifold meshes for --shape: their F is minus the unsigned distance");
 }
 
-std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs)
+std::shared_ptr<const frep::UserFunctionRegistry> load_shape_inputs(const UserInputs& inputs)
 {
-  if (inputs.libraries.empty() && inputs.shapes.empty())
+  if (inputs.shapes.empty())
   {
     return nullptr;
   }
   auto registry = std::make_shared<frep::UserFunctionRegistry>();
-  if (std::string e = add_user_inputs(inputs.libraries, inputs.shapes, inputs.unsigned_distance,
-        *registry);
+  if (std::string e = add_user_inputs({}, inputs.shapes, inputs.unsigned_distance, *registry);
       !e.empty())
   {
     throw UserError(e);

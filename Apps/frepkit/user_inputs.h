@@ -19,7 +19,8 @@ namespace frepkit
 
 struct UserInputs
 {
-  std::vector<std::string> libraries; ///< --library FILE (repeatable)
+  /// --library FILE (repeatable): HyperFun library files (.hf) and shared libraries
+  std::vector<std::string> libraries;
   std::vector<std::string> shapes;    ///< --shape name=FILE (repeatable)
   bool unsigned_distance = false;     ///< --unsigned-distance: open meshes allowed
 };
@@ -27,8 +28,9 @@ struct UserInputs
 /// Adds --library, --shape and --unsigned-distance to a subcommand.
 void add_user_input_options(CLI::App* command, UserInputs& inputs);
 
-/// The registry of every library and shape, or null when none is given. Throws UserError
-/// naming the library (or shape file) and the function when one cannot be loaded.
-std::shared_ptr<const frep::UserFunctionRegistry> load_user_inputs(const UserInputs& inputs);
+/// The registry of the --shape functions, or null when none is given (the --library files are
+/// loaded by the engine's load_model, frep::LoadOptions::libraries). Throws UserError naming the
+/// shape file when one cannot be read.
+std::shared_ptr<const frep::UserFunctionRegistry> load_shape_inputs(const UserInputs& inputs);
 
 } // namespace frepkit

@@ -4,7 +4,7 @@
 //   frepkit_consumer MODEL.hf OUT.vtp [x1 x2 x3 x4 x5]
 #include "Compiler/model.h"
 #include "Eval/point_evaluator.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 
 #include "vtkFRepPolygonizer.h"
 #include "vtkFRepSlice.h"
@@ -29,21 +29,11 @@ int main(int argc, char** argv)
     return 1;
   }
 
-  // The engine: parse, compile, evaluate F at one point.
-  std::ifstream in(argv[1], std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const frep::ParseResult parsed = frep::parse_program(text.str(), argv[1]);
-  if (!parsed.ok())
+  // The engine: load (read, parse, choose my_model, compile), evaluate F at one point.
+  const frep::LoadedModel compiled = frep::load_model(frep::ModelSource::file(argv[1]));
+  if (!compiled.ok())
   {
-    std::cerr << frep::format_diagnostics(parsed.diagnostics);
-    return 1;
-  }
-  const int object = frep::ast::select_object(*parsed.program, "my_model");
-  const frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, object);
-  if (!compiled.model)
-  {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
+    std::cerr << compiled.message();
     return 1;
   }
   std::vector<double> point;

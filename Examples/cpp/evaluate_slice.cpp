@@ -7,7 +7,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 
 #include <cstdio>
 #include <fstream>
@@ -22,36 +22,24 @@ int main(int argc, char** argv)
     std::cerr << "usage: " << argv[0] << " MODEL.hf\n";
     return 1;
   }
-  std::ifstream in(argv[1], std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-
-  // 1. Parse: every diagnostic comes back as file:line:col.
-  const frep::ParseResult parsed = frep::parse_program(text.str(), argv[1]);
-  if (!parsed.ok())
+  // 1. Load: read, parse, choose the object (my_model, else the first) and compile it
+  //    (immutable, shareable between threads); every problem comes back as file:line:col.
+  const frep::LoadedModel compiled = frep::load_model(frep::ModelSource::file(argv[1]));
+  if (!compiled.ok())
   {
-    std::cerr << frep::format_diagnostics(parsed.diagnostics);
-    return 1;
-  }
-  const int object = frep::ast::select_object(*parsed.program, "my_model");
-
-  // 2. Compile the object (immutable, shareable between threads).
-  const frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, object);
-  if (!compiled.model)
-  {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
+    std::cerr << compiled.message();
     return 1;
   }
   const frep::Model& model = *compiled.model;
 
-  // 3. Specialise: fix x4 and x5; x1..x3 stay free and become the tape's inputs 0..2.
+  // 2. Specialise: fix x4 and x5; x1..x3 stay free and become the tape's inputs 0..2.
   frep::Specialisation slice;
   slice.fixed = { std::nullopt, std::nullopt, std::nullopt, 0.5, 0.25 };
   const std::shared_ptr<const frep::Tape> tape = model.specialise(slice);
   std::printf("%s: %d-D, slice tape %zu instructions (all free: %zu)\n", model.name().c_str(),
     model.x_dim(), tape->code.size(), model.tape()->code.size());
 
-  // 4. Batch evaluation on a 64^3 grid, structure of arrays, all cores.
+  // 3. Batch evaluation on a 64^3 grid, structure of arrays, all cores.
   const int n = 64;
   std::vector<double> xs, ys, zs;
   for (int k = 0; k < n; ++k)
@@ -74,14 +62,14 @@ int main(int argc, char** argv)
   std::printf("grid %d^3: %zu points inside, %zu run-time errors, %d threads\n", n, inside,
     failed, batch.threads());
 
-  // 5. Interval evaluation: is a box certainly outside (F < 0 everywhere)?
+  // 4. Interval evaluation: is a box certainly outside (F < 0 everywhere)?
   frep::IntervalEvaluator interval(tape);
   const frep::Interval box[] = { { 4, 5 }, { 4, 5 }, { 4, 5 } };
   const frep::IntervalResult r = interval.evaluate(box);
   std::printf("box [4,5]^3: F in [%g, %g] -> %s\n", r.value.lo, r.value.hi,
     r.value.hi < 0 ? "certainly outside" : (r.value.lo >= 0 ? "certainly inside" : "unknown"));
 
-  // 6. Gradient: the outward normal is -grad F (F grows inwards).
+  // 5. Gradient: the outward normal is -grad F (F grows inwards).
   frep::GradientEvaluator gradient(tape);
   const double p[] = { 1.0, 0.5, 0.25 };
   double g[3];

@@ -10,7 +10,7 @@
 #include "Scene/section_mesh.h"
 
 #include "Compiler/model.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 #include "Mesh/mesh_topology.h"
 
 #include <cstdio>
@@ -25,19 +25,10 @@ int main(int argc, char** argv)
     std::cerr << "usage: " << argv[0] << " MODEL.hf OUT.ppm\n";
     return 1;
   }
-  std::ifstream in(argv[1], std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const frep::ParseResult parsed = frep::parse_program(text.str(), argv[1]);
-  if (!parsed.ok())
+  const frep::LoadedModel compiled = frep::load_model(frep::ModelSource::file(argv[1]));
+  if (!compiled.ok())
   {
-    std::cerr << frep::format_diagnostics(parsed.diagnostics);
-    return 1;
-  }
-  const auto compiled = frep::Model::compile(parsed.program, 0);
-  if (!compiled.model)
-  {
-    std::cerr << frep::format_diagnostics(compiled.diagnostics);
+    std::cerr << compiled.message();
     return 1;
   }
   const frep::Model& model = *compiled.model;

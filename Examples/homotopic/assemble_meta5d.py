@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes meta5d.hf from the four key shapes: their objects verbatim (their header comments
-dropped), then the 5-D blend `meta5d` and `my_model` (the default object, equal to meta5d).
+dropped), then blend.hf's 5-D blend `meta5d` and `my_model` (the default object, equal to meta5d).
 Run it after editing cat.hf, robot.hf, nihon.hf or roblet.hf:  python3 assemble_meta5d.py
 The test homotopic_models_test checks that meta5d's four corners equal the four files."""
 import pathlib
@@ -30,25 +30,9 @@ HEAD = """\
 --   mesh the blend; --object cat (or hfp -o cat) meshes one key shape.
 """
 
-TAIL = """\
--- ==============================================================================================
--- the 5-D blend (the key shapes take x[1..3] only: copy them into xt)
-meta5d(x[5], a[1])
-{
-  array xt[3];
-  xt[1] = x[1];
-  xt[2] = x[2];
-  xt[3] = x[3];
-  meta5d = (cat(xt, a)*(1.-x[4])+robot(xt, a)*x[4])*(1.-x[5])
-         + (nihon(xt, a)*(1.-x[4])+roblet(xt, a)*x[4])*x[5];
-}
-
--- the default object (hfp and frepkit evaluate my_model when no object is named)
-my_model(x[5], a[1])
-{
-  my_model = meta5d(x, a);
-}
-"""
+# The blend itself lives in blend.hf (which calls the four files as HyperFun libraries:
+# frepkit --library cat.hf ...); meta5d.hf pastes everything into the one file the original
+# interpreter reads.
 
 here = pathlib.Path(__file__).resolve().parent
 parts = []
@@ -57,4 +41,6 @@ for name in ('cat', 'robot', 'nihon', 'roblet'):
     start = re.search(r'^' + name + r'\(x\[3\], a\[1\]\)', text, re.M).start()
     parts.append('-- ' + '=' * 94 + '\n-- ' + name + ': verbatim from ' + name + '.hf (see its header)\n' +
                  text[start:].rstrip() + '\n')
+blend = (here / 'blend.hf').read_text()
+TAIL = '-- ' + '=' * 94 + '\n' + blend[re.search(r'^-- the 5-D blend', blend, re.M).start():]
 (here / 'meta5d.hf').write_text(HEAD + '\n' + '\n'.join(parts) + '\n' + TAIL)

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <utility>
 
 namespace frep::compiler
 {
@@ -213,11 +214,14 @@ public:
       return;
     }
     const ast::Object& o = program_.objects[static_cast<std::size_t>(index)];
+    // Errors inside the object name its file (a HyperFun library file's objects have their own).
+    const std::string* caller_file = std::exchange(file_, o.file.empty() ? &program_.file : &o.file);
     block(o.body);
     if (o.result)
     {
       expr(*o.result);
     }
+    file_ = caller_file;
   }
 
   std::vector<TapeError> result;
@@ -225,9 +229,9 @@ public:
 private:
   void add(const char* message, SourceLocation at)
   {
-    if (seen_.insert(std::make_tuple(std::string(message), at.line, at.column)).second)
+    if (seen_.insert(std::make_tuple(std::string(message), at.line, at.column, *file_)).second)
     {
-      result.push_back(TapeError{ message, at, program_.file });
+      result.push_back(TapeError{ message, at, *file_ });
     }
   }
 
@@ -370,8 +374,9 @@ private:
   }
 
   const ast::Program& program_;
+  const std::string* file_ = &program_.file;
   std::set<int> visited_;
-  std::set<std::tuple<std::string, int, int>> seen_;
+  std::set<std::tuple<std::string, int, int, std::string>> seen_;
 };
 
 } // namespace

@@ -97,6 +97,7 @@ public:
   void run(int object_index, const Specialisation& spec)
   {
     const ast::Object& object = program_.objects[static_cast<std::size_t>(object_index)];
+    file_ = object_file(object);
     Frame frame = fresh_frame(object);
     const std::vector<int> inputs = input_indices(object.x_dim, spec);
     for (int i = 0; i < object.x_dim; ++i)
@@ -155,12 +156,12 @@ public:
 
   int error_id(const std::string& message, SourceLocation location)
   {
-    const auto key = std::make_tuple(message, location.line, location.column);
+    const auto key = std::make_tuple(message, location.line, location.column, *file_);
     if (auto it = error_ids_.find(key); it != error_ids_.end())
     {
       return it->second;
     }
-    out_.errors.push_back(TapeError{ message, location, program_.file });
+    out_.errors.push_back(TapeError{ message, location, *file_ });
     const int id = static_cast<int>(out_.errors.size());
     error_ids_.emplace(key, id);
     return id;
@@ -862,7 +863,10 @@ private:
     copy_in(inner.arrays[0], xs);
     copy_in(inner.arrays[1], as);
     copy_in(inner.arrays[2], s_used);
+    // Errors inside the callee name its file (a HyperFun library file's objects have their own).
+    const std::string* caller_file = std::exchange(file_, object_file(callee));
     const Expr value = execute(inner);
+    file_ = caller_file;
     for (std::size_t k = 0; k < s_count && k < inner.arrays[2].size(); ++k)
     {
       ss[k].value = inner.arrays[2][k].value; // the callee's s[] is copied back
@@ -880,8 +884,15 @@ private:
   Expr path_{ 1.0 };
   bool dead_ = false;
   int call_depth_ = 0;
-  std::map<std::tuple<std::string, int, int>, int> error_ids_;
+  std::map<std::tuple<std::string, int, int, std::string>, int> error_ids_;
   std::unordered_set<NodeId> guarded_;
+  /// The file of the object being lowered (run-time errors name it).
+  const std::string* file_ = &program_.file;
+
+  const std::string* object_file(const ast::Object& object) const
+  {
+    return object.file.empty() ? &program_.file : &object.file;
+  }
 };
 
 void SymbolicContext::abort_if(const Expr& condition, const char* message)

@@ -49,7 +49,8 @@ std::shared_ptr<const Tape> ObjectSource::fallback(const Specialisation& spec) c
 {
   auto tape = std::make_shared<Tape>();
   tape->errors = possible_errors(*program_, object_index_);
-  tape->errors.push_back(TapeError{ "Run-time error", object_->location, program_->file });
+  tape->errors.push_back(TapeError{ "Run-time error", object_->location,
+    object_->file.empty() ? program_->file : object_->file });
   const int unknown = static_cast<int>(tape->errors.size());
   std::vector<double> parameters(static_cast<std::size_t>(object_->a_dim), 0.0);
   for (std::size_t k = 0; k < parameters.size() && k < spec.parameters.size(); ++k)

@@ -31,6 +31,11 @@ int find_object(const Program& program, std::string_view name)
   return -1;
 }
 
+int own_object_count(const Program& program)
+{
+  return static_cast<int>(program.objects.size()) - program.first_own_object;
+}
+
 int select_default_object(const Program& program)
 {
   return select_object(program, default_object_name);
@@ -38,23 +43,20 @@ int select_default_object(const Program& program)
 
 int select_object(const Program& program, std::string_view name, NameMatch match)
 {
-  if (program.objects.empty())
+  if (own_object_count(program) <= 0)
   {
     return -1;
   }
-  if (match == NameMatch::IgnoreCase)
+  const std::string wanted = match == NameMatch::IgnoreCase ? lower(name) : std::string(name);
+  for (std::size_t i = static_cast<std::size_t>(program.first_own_object);
+       i < program.objects.size(); ++i)
   {
-    const int found = find_object(program, name);
-    return found >= 0 ? found : 0;
-  }
-  for (std::size_t i = 0; i < program.objects.size(); ++i)
-  {
-    if (program.objects[i].name == name)
+    if (program.objects[i].name == wanted)
     {
       return static_cast<int>(i);
     }
   }
-  return 0;
+  return program.first_own_object;
 }
 
 } // namespace frep::ast

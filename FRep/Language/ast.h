@@ -229,6 +229,10 @@ struct LocalArray
 struct Object
 {
   std::string name; ///< lower-case, as the original stores it
+  /// The file the object was read from: the program's own file, or a HyperFun library file
+  /// (ParseOptions::libraries) whose objects the program calls like its own. Run-time errors
+  /// inside the object name this file.
+  std::string file;
   SourceLocation location;
   int x_dim = 0;
   int a_dim = 0;     ///< may be 0
@@ -243,7 +247,12 @@ struct Object
 struct Program
 {
   std::string file;             ///< for diagnostics
-  std::vector<Object> objects;  ///< in file order; calls only go to earlier objects
+  /// The library files' objects first (in the order the libraries were given), then the file's
+  /// own, each in file order; calls only go to earlier objects.
+  std::vector<Object> objects;
+  /// Index of the file's first own object: the objects before it come from HyperFun library
+  /// files (0 without libraries). The default object is chosen among the own objects.
+  int first_own_object = 0;
   /// The user functions the program was parsed with (null: none); UserCallExpr indexes it.
   std::shared_ptr<const UserFunctionRegistry> user_functions;
 };
@@ -255,20 +264,26 @@ enum class NameMatch : std::uint8_t
   Exact       ///< the original's strcmp against the lower-case stored names (hfp -o)
 };
 
+/// Number of objects the file itself defines (not counting the library files' objects).
+int own_object_count(const Program& program);
+
 /// The object the original would evaluate for a requested name (hfinterpreter.cpp): the object
-/// called `name`, else the FIRST object of the file. Returns -1 only when the program has no
-/// object. With no name from the user, use select_default_object.
+/// called `name`, else the FIRST object of the file (its first own object: library files'
+/// objects are only called). Returns -1 only when the file defines no object. With no name from
+/// the user, use select_default_object.
 int select_object(const Program& program, std::string_view name,
   NameMatch match = NameMatch::IgnoreCase);
 
 /// The name of the object evaluated when none is named (the original's default, hfp -o).
 inline constexpr std::string_view default_object_name = "my_model";
 
-/// The object evaluated when none is named: `my_model` (any case), else the first object of the
-/// file; -1 only when the program has no object. Every tool and filter uses this one rule.
+/// The object evaluated when none is named: `my_model` (any case) among the file's own objects,
+/// else the file's first own object; -1 only when the file defines no object. Every tool and
+/// filter uses this one rule.
 int select_default_object(const Program& program);
 
-/// Index of the object called `name` (case-insensitive), or -1.
+/// Index of the object called `name` (case-insensitive), or -1. Library files' objects are
+/// found too (names are unique across the program).
 int find_object(const Program& program, std::string_view name);
 
 } // namespace frep::ast

@@ -80,18 +80,26 @@ std::string printable(std::string_view text)
 class Parser
 {
 public:
-  Parser(std::string_view text, std::string file, const ParseOptions& options)
+  /// The objects read so far from the files parsed before this one (library files), and the
+  /// index of each name; each file's parser adds its objects to the same program.
+  struct Shared
+  {
+    std::shared_ptr<ast::Program> program;
+    std::unordered_map<std::string, int> object_index; ///< first object of each name
+  };
+
+  Parser(std::string_view text, std::string file, const ParseOptions& options, Shared& shared)
     : text_(text)
     , tokens_(tokenize(text, LexerOptions{ options.accept_carriage_return }))
     , file_(std::move(file))
     , max_depth_(std::max(1, options.max_nesting_depth))
+    , program_(shared.program)
+    , object_index_(shared.object_index)
   {
-    program_ = std::make_shared<ast::Program>();
-    program_->file = file_;
-    program_->user_functions = options.user_functions;
   }
 
-  ParseResult run()
+  /// Parses the whole file into the shared program; returns its diagnostics.
+  std::vector<Diagnostic> run()
   {
     try
     {
@@ -102,16 +110,7 @@ public:
       diagnostics_.push_back(
         Diagnostic{ file_, tok().location, "Too many errors; parsing stopped" });
     }
-    ParseResult result;
-    if (diagnostics_.empty())
-    {
-      result.program = std::move(program_);
-    }
-    else
-    {
-      result.diagnostics = std::move(diagnostics_);
-    }
-    return result;
+    return std::move(diagnostics_);
   }
 
 private:
@@ -122,7 +121,7 @@ private:
   int max_depth_;
   std::vector<Diagnostic> diagnostics_;
   std::shared_ptr<ast::Program> program_;
-  std::unordered_map<std::string, int> object_index_; ///< first object of each name
+  std::unordered_map<std::string, int>& object_index_; ///< first object of each name
 
   // State of the object being parsed.
   ast::Object* object_ = nullptr;
@@ -291,12 +290,17 @@ private:
   {
     ast::Object object;
     object.name = tok().text;
+    object.file = file_;
     object.location = tok().location;
     object_errors_ = diagnostics_.size();
-    const bool unique = object_index_.find(object.name) == object_index_.end();
+    const auto earlier = object_index_.find(object.name);
+    const bool unique = earlier == object_index_.end();
     if (!unique)
     {
-      report(tok(), "Body name is not unique");
+      const ast::Object& other = program_->objects[static_cast<std::size_t>(earlier->second)];
+      report(tok(), other.file == file_ ? std::string("Body name is not unique")
+                                        : "Body name is not unique (library file " + other.file +
+            " defines it at line " + std::to_string(other.location.line) + ")");
     }
 
     try
@@ -1384,8 +1388,31 @@ private:
 
 ParseResult parse_program(std::string_view text, std::string file_name, const ParseOptions& options)
 {
-  Parser parser(text, std::move(file_name), options);
-  return parser.run();
+  Parser::Shared shared;
+  shared.program = std::make_shared<ast::Program>();
+  shared.program->file = file_name;
+  shared.program->user_functions = options.user_functions;
+  std::vector<Diagnostic> diagnostics;
+  for (const SourceText& library : options.libraries)
+  {
+    std::vector<Diagnostic> found = Parser(library.text, library.file, options, shared).run();
+    diagnostics.insert(diagnostics.end(), std::make_move_iterator(found.begin()),
+      std::make_move_iterator(found.end()));
+  }
+  shared.program->first_own_object = static_cast<int>(shared.program->objects.size());
+  std::vector<Diagnostic> found = Parser(text, std::move(file_name), options, shared).run();
+  diagnostics.insert(diagnostics.end(), std::make_move_iterator(found.begin()),
+    std::make_move_iterator(found.end()));
+  ParseResult result;
+  if (diagnostics.empty())
+  {
+    result.program = std::move(shared.program);
+  }
+  else
+  {
+    result.diagnostics = std::move(diagnostics);
+  }
+  return result;
 }
 
 } // namespace frep

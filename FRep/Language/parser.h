@@ -12,6 +12,13 @@
 namespace frep
 {
 
+/// A HyperFun text and the file name its diagnostics and run-time errors name.
+struct SourceText
+{
+  std::string file;
+  std::string text;
+};
+
 struct ParseOptions
 {
   /// Accept CR as whitespace (a CRLF file). The original rejects it on Unix; we accept it by
@@ -24,6 +31,10 @@ struct ParseOptions
   int max_nesting_depth = 2000;
   /// User functions the program may call by name (user_functions.h); kept by the program.
   std::shared_ptr<const UserFunctionRegistry> user_functions;
+  /// HyperFun library files (the paper's "user's own library written in HyperFun"): parsed
+  /// first, in this order, into the same program, so the file calls their objects like its own
+  /// earlier objects. Names are unique across all of them; diagnostics name the library file.
+  std::vector<SourceText> libraries;
 };
 
 struct ParseResult

@@ -1,8 +1,7 @@
 #include "Plan/unit_map.h"
 
-#include "Compiler/model.h"
+#include "Compiler/load_model.h"
 #include "Eval/point_evaluator.h"
-#include "Language/parser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +137,8 @@ UnitCurve::Result UnitCurve::make(const Curve& curve)
   c.curve_ = curve;
   if (curve.kind == Curve::Kind::Expression)
   {
-    const ParseResult parsed = parse_program(wrap_expression(curve.expression), "<curve>");
+    const LoadedProgram parsed =
+      load_program(ModelSource::from_text(wrap_expression(curve.expression), "<curve>"));
     if (!parsed.ok())
     {
       result.error =
@@ -152,8 +152,8 @@ UnitCurve::Result UnitCurve::make(const Curve& curve)
       result.error = "expression \"" + curve.expression + "\": not a single expression";
       return result;
     }
-    const Model::CompileResult compiled = Model::compile(parsed.program, 0);
-    if (!compiled.model)
+    const LoadedModel compiled = compile_object(parsed);
+    if (!compiled.ok())
     {
       result.error =
         "expression \"" + curve.expression + "\": " +

@@ -59,6 +59,25 @@ if cmp -s "$work/tut_out2" "$work/tut_values"; then pass "interpreter values equ
 run "eval object by name, case-insensitive" 0 bash -c "echo '0 0 0' | '$frepkit' eval '$prog' --object CSGobj"
 run "eval unknown object" 1 bash -c "echo '0 0 0' | '$frepkit' eval '$prog' --object nosuch"
 expect_in "unknown object lists objects" "$err" "csgobj"
+expect_in "unknown object: the engine's message lists the objects" "$err" "no object named 'nosuch' (objects: "
+for sub in "mesh -o $work/x.stl" "slice -o $work/x.csv --fix x3=0"; do
+  run "$sub: unknown object" 1 $frepkit ${sub%% *} "$sphere" --object nosuch ${sub#* }
+  expect_in "$sub: the same message" "$err" "no object named 'nosuch' (objects: my_model)"
+done
+
+# HyperFun library files (--library FILE.hf): the model calls their objects like its own.
+homotopic="$source_dir/Examples/homotopic"
+libs=(--library "$homotopic/cat.hf" --library "$homotopic/robot.hf" --library "$homotopic/nihon.hf" --library "$homotopic/roblet.hf")
+printf '0.5 1 2 0.3 0.7\n-3 0.25 4 0.9 0.1\n0 0 0 0.5 0.5\n' >"$work/p5"
+run "eval blend.hf with the key shapes as libraries" 0 "$frepkit" eval "$homotopic/blend.hf" "${libs[@]}" --points "$work/p5"
+blend_values=$out
+run "eval meta5d.hf (the same objects in one file)" 0 "$frepkit" eval "$homotopic/meta5d.hf" --points "$work/p5"
+[ -n "$blend_values" ] && [ "$blend_values" = "$out" ] && pass "library objects: the same values as pasted" || fail "library values differ: $blend_values vs $out"
+run "check blend.hf lists the library objects" 0 "$frepkit" check "$homotopic/blend.hf" "${libs[@]}"
+expect_in "check: the default object is the file's own" "$out" "* my_model(x[5], a[1], s[1])"
+run "blend.hf without its libraries" 1 "$frepkit" check "$homotopic/blend.hf"
+run "a missing library file" 1 "$frepkit" check "$homotopic/blend.hf" --library "$work/none.hf"
+expect_in "missing library: named" "$err" "$work/none.hf: cannot open the library file"
 params=$(model params.hf 'my_model(x[1], a[2]) { my_model = a[1] * 10 + a[2] + x[1]; }')
 run "eval -a" 0 bash -c "echo '0.5' | '$frepkit' eval '$params' -a 2,3"
 [ "$out" = "23.5" ] && pass "parameters applied" || fail "parameters applied: $out"

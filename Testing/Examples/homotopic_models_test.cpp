@@ -8,7 +8,7 @@
 #include "Compiler/model.h"
 #include "Eval/batch_evaluator.h"
 #include "Eval/gradient_evaluator.h"
-#include "Language/parser.h"
+#include "Compiler/load_model.h"
 #include "Mesh/mesh_topology.h"
 #include "Mesh/surface.h"
 
@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -38,40 +39,24 @@ std::string model_path(const std::string& file)
   return std::string(FREPKIT_SOURCE_DIR) + "/Examples/homotopic/" + file;
 }
 
-std::shared_ptr<const frep::ast::Program> parse_file(const std::string& file)
+/// The object `name` of `file` ("" = the default object: my_model, else the first), compiled,
+/// with `libraries` (files of Examples/homotopic) it may call.
+std::shared_ptr<const frep::Model> load(const std::string& file, const std::string& name = "",
+  const std::vector<std::string>& libraries = {})
 {
-  const std::string path = model_path(file);
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << "cannot read " << path;
-  std::stringstream text;
-  text << in.rdbuf();
-  const frep::ParseResult parsed = frep::parse_program(text.str(), path);
-  EXPECT_TRUE(parsed.ok()) << frep::format_diagnostics(parsed.diagnostics);
-  return parsed.program;
-}
-
-/// The object `name` of `file` ("" = the default object: my_model, else the first), compiled.
-std::shared_ptr<const frep::Model> load(const std::string& file, const std::string& name = "")
-{
-  const auto program = parse_file(file);
-  if (!program)
+  frep::LoadOptions options;
+  options.object = name;
+  for (const std::string& library : libraries)
   {
-    return nullptr;
+    options.libraries.push_back(model_path(library));
   }
-  const int index = name.empty() ? frep::ast::select_object(*program, "my_model")
-                                 : frep::ast::find_object(*program, name);
-  EXPECT_GE(index, 0) << file << " has no object " << name;
-  if (index < 0)
+  const frep::LoadedModel loaded = frep::load_model(frep::ModelSource::file(model_path(file)), options);
+  EXPECT_TRUE(loaded.ok()) << loaded.message();
+  if (loaded.model)
   {
-    return nullptr;
+    EXPECT_TRUE(loaded.model->is_compiled()) << loaded.model->fallback_reason();
   }
-  const frep::Model::CompileResult compiled = frep::Model::compile(program, index);
-  EXPECT_TRUE(compiled.model) << frep::format_diagnostics(compiled.diagnostics);
-  if (compiled.model)
-  {
-    EXPECT_TRUE(compiled.model->is_compiled()) << compiled.model->fallback_reason();
-  }
-  return compiled.model;
+  return loaded.model;
 }
 
 frep::mesh::Surface extract(std::shared_ptr<const frep::Tape> tape, int samples = kGrid)
@@ -283,12 +268,16 @@ TEST(HomotopicModels, RobLetIsTwoSpheresAndThreeTori)
 
 // Meta5D(x, y, z, x4, x5) at the corners (0,0), (1,0), (0,1), (1,1) equals Cat, Robot, NiHon,
 // Rob_let as written in their own files, bit for bit (the weights are exactly 0 and 1): through
-// the full 5-D tape, through the 3-D slice tape, for `meta5d` and for the default object.
+// the full 5-D tape, through the 3-D slice tape, for `meta5d`, for the default object and for
+// blend.hf, which calls the four files as HyperFun libraries instead of pasting them.
 TEST(HomotopicModels, Meta5DCornersEqualTheKeyShapes)
 {
   const auto meta5d = load("meta5d.hf", "meta5d");
   const auto main_object = load("meta5d.hf");
-  ASSERT_TRUE(meta5d && main_object);
+  const auto blend =
+    load("blend.hf", "", { "cat.hf", "robot.hf", "nihon.hf", "roblet.hf" });
+  ASSERT_TRUE(meta5d && main_object && blend);
+  EXPECT_EQ(blend->name(), "my_model");
   EXPECT_EQ(main_object->name(), "my_model");
   ASSERT_EQ(meta5d->x_dim(), 5);
   ASSERT_EQ(main_object->x_dim(), 5);
@@ -314,6 +303,7 @@ TEST(HomotopicModels, Meta5DCornersEqualTheKeyShapes)
       evaluate(main_object->tape(), xyzw),       // the default object my_model
       evaluate(meta5d->specialise(slice), xyz),  // the 3-D slice tape of the corner
       evaluate(inside_meta->tape(), xyz),        // the copy of the shape inside meta5d.hf
+      evaluate(blend->tape(), xyzw),             // blend.hf calling the four files as libraries
     };
     std::size_t inside = 0;
     for (std::size_t i = 0; i < count; ++i)
@@ -327,6 +317,32 @@ TEST(HomotopicModels, Meta5DCornersEqualTheKeyShapes)
     }
     EXPECT_GT(inside, 0u); // the comparison covers both signs
     EXPECT_LT(inside, count);
+  }
+}
+
+// blend.hf with the four key-shape files as HyperFun libraries is meta5d.hf everywhere, not only
+// at the corners: the same values, bit for bit, at mixed (x4, x5).
+TEST(HomotopicModels, BlendWithLibrariesIsMeta5DBitForBit)
+{
+  const auto meta5d = load("meta5d.hf");
+  const auto blend = load("blend.hf", "", { "cat.hf", "robot.hf", "nihon.hf", "roblet.hf" });
+  ASSERT_TRUE(meta5d && blend);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> space(-kBox, kBox);
+  std::uniform_real_distribution<double> time(0.0, 1.0);
+  std::vector<std::vector<double>> points(5);
+  for (int i = 0; i < 4000; ++i)
+  {
+    for (int k = 0; k < 5; ++k)
+    {
+      points[static_cast<std::size_t>(k)].push_back(k < 3 ? space(random) : time(random));
+    }
+  }
+  const std::vector<double> expected = evaluate(meta5d->tape(), points);
+  const std::vector<double> got = evaluate(blend->tape(), points);
+  for (std::size_t i = 0; i < expected.size(); ++i)
+  {
+    ASSERT_EQ(std::memcmp(&got[i], &expected[i], sizeof(double)), 0) << "point " << i;
   }
 }
 

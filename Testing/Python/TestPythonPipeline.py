@@ -200,6 +200,28 @@ try:
 except frepkit.FRepError as e:
     check(any("<string>:3:" in m for m in e.messages), "update() downstream: %s" % e.messages)
 
+# One loading call everywhere (frep::load_model): a .vm tape loads by its extension, HyperFun
+# library files are called like the file's own objects, and the messages are frepkit's.
+vm = frepkit.load(file=os.path.join(source_dir, "Examples", "vm", "two-discs.vm"))
+check(vm.GetModelDimension() == 2, ".vm file loads in Python (x[%d])" % vm.GetModelDimension())
+vm_out = subprocess.run([frepkit_exe, "eval", os.path.join(source_dir, "Examples", "vm", "two-discs.vm")],
+                        input="0.25 0.5\n", capture_output=True, text=True).stdout.strip()
+vm_py = frepkit.evaluate(vm, numpy.array([[0.25, 0.5]]))
+check(float(vm_out) == float(vm_py[0]), ".vm value in Python equals frepkit eval's (%s)" % vm_out)
+homotopic = os.path.join(source_dir, "Examples", "homotopic")
+libs = [os.path.join(homotopic, n + ".hf") for n in ("cat", "robot", "nihon", "roblet")]
+blend = frepkit.load(file=os.path.join(homotopic, "blend.hf"), libraries=libs)
+whole = frepkit.load(file=os.path.join(homotopic, "meta5d.hf"))
+points = numpy.array([[0.5, 1.0, 2.0, 0.3, 0.7], [-3.0, 0.25, 4.0, 0.9, 0.1]])
+check(numpy.array_equal(frepkit.evaluate(blend, points), frepkit.evaluate(whole, points)),
+      "blend.hf with the key shapes as libraries equals meta5d.hf")
+try:
+    frepkit.load(file=model_file, object="nosuch")
+    check(False, "an unknown object raises FRepError")
+except frepkit.FRepError as e:
+    check(any("no object named 'nosuch' (objects: " in m for m in e.messages),
+          "unknown object: the engine's message (%s)" % e.messages)
+
 # Overloaded names: vtkHyperFunSource's ObjectName is the model's object (not vtkObject's).
 named = vtkHyperFunSource()
 named.SetObjectName("box")

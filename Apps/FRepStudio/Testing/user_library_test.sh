@@ -50,4 +50,23 @@ if [ $code -ne 1 ] || ! grep -q "shape pebble: /nonexistent/pebble.stl: cannot o
 else
   echo "PASS: a missing shape file is named, exit code 1"
 fi
+# HyperFun library files (--library FILE.hf, the engine's load_model): the Meta5D blend calling the
+# four key shapes from their own files, and a .vm tape, load in FRepStudio as in frepkit.
+homotopic="$4/Examples/homotopic"
+"$xvfb" "$studio" --library "$homotopic/cat.hf" --library "$homotopic/robot.hf" \
+  --library "$homotopic/nihon.hf" --library "$homotopic/roblet.hf" \
+  --screenshot "$work/blend.png" --size 640x400 "$homotopic/blend.hf" >"$work/out" 2>"$work/err"
+code=$?
+if [ $code -ne 0 ] || [ ! -s "$work/blend.png" ] || grep -q "model has errors" "$work/err"; then
+  echo "FAIL: blend.hf with HyperFun libraries: code $code, $(cat "$work/err")"; status=1
+else
+  echo "PASS: blend.hf with HyperFun libraries"
+fi
+"$xvfb" "$studio" --screenshot "$work/blend_alone.png" --size 640x400 "$homotopic/blend.hf" \
+  >"$work/out" 2>"$work/err"
+if grep -q "model has errors" "$work/err"; then
+  echo "PASS: blend.hf without its libraries has errors"
+else
+  echo "FAIL: blend.hf without its libraries: no error noted: $(cat "$work/err")"; status=1
+fi
 exit $status

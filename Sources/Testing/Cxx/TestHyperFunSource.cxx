@@ -133,8 +133,8 @@ int TestHyperFunSource(int, char*[])
   events->Clear();
   source->Update();
   FREPKIT_CHECK(failures, events->Errors == 1);
-  FREPKIT_CHECK(failures, errors->CheckErrorMessage("no object called 'cube'") == 0);
-  FREPKIT_CHECK(failures, events->ErrorText.find("no object called 'cube'") != std::string::npos);
+  FREPKIT_CHECK(failures, errors->CheckErrorMessage("no object named 'cube'") == 0);
+  FREPKIT_CHECK(failures, events->ErrorText.find("no object named 'cube'") != std::string::npos);
   FREPKIT_CHECK(failures, events->ErrorText.find("ball, slab") != std::string::npos);
   FREPKIT_CHECK(failures, !source->GetOutput()->HasModel());
   FREPKIT_CHECK(failures, source->GetOutput()->GetDimension() == 0);

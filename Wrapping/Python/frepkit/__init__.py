@@ -134,12 +134,15 @@ def update(algorithm, port=None):
     return algorithm
 
 
-def load(text=None, file=None, object=None, parameters=None, ranges=None, default_range=None):
-    """Compiles HyperFun text (or the .hf file `file`) into a vtkFRepObject with every
-    coordinate free. `object`: the object to take (default my_model, else the first);
-    `parameters`: a[1..]; `ranges`: [(lo, hi), ...] per coordinate x1.. (None: the default
-    [-10, 10], or `default_range`). Raises FRepError with every diagnostic
-    ("file:line:col: error: ...") if the text does not compile."""
+def load(text=None, file=None, object=None, parameters=None, ranges=None, default_range=None,
+         libraries=None):
+    """Compiles HyperFun text (or the model file `file`: .hf, or a .vm tape) into a
+    vtkFRepObject with every coordinate free. `object`: the object to take (default my_model,
+    else the first); `parameters`: a[1..]; `ranges`: [(lo, hi), ...] per coordinate x1.. (None:
+    the default [-10, 10], or `default_range`); `libraries`: files the model may call, HyperFun
+    .hf files (their objects) or shared libraries implementing frepkit_user.h (their
+    functions). Raises FRepError with every diagnostic ("file:line:col: error: ...") if the
+    model does not load; the messages are the engine's, the same as frepkit's."""
     if (text is None) == (file is None):
         raise ValueError("load: give exactly one of text= and file=")
     source = vtkHyperFunSource()
@@ -147,6 +150,8 @@ def load(text=None, file=None, object=None, parameters=None, ranges=None, defaul
         source.SetFileName(str(file))
     else:
         source.SetModelText(text)
+    for library in libraries or []:
+        source.AddUserLibrary(str(library))
     if object is not None:
         source.SetObjectName(object)
     for i, value in enumerate(parameters or []):

@@ -1,5 +1,6 @@
 #include "vtkMultimediaMapping.h"
 
+#include "Media/durable_file.h"
 #include "Plan/mapping_json.h"
 
 #include "vtkObjectFactory.h"
@@ -64,10 +65,12 @@ bool vtkMultimediaMapping::SaveFile(const std::string& path) const
       return false;
     }
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  // As every writer of the project: the data on disk before the file gets its name, the name on
+  // disk before we report success (frep::media::durable_rename).
+  if (const std::string problem = frep::media::durable_rename(temporary, path); !problem.empty())
   {
     std::remove(temporary.c_str());
-    vtkErrorMacro(<< path << ": cannot rename " << temporary << " to it");
+    vtkErrorMacro(<< path << ": cannot write the mapping file (" << problem << ")");
     return false;
   }
   return true;

@@ -263,8 +263,19 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
     };
     // Progress comes on this thread only (raycast::render's promise): UpdateProgress is safe.
     const auto progress = [this](double fraction) { this->UpdateProgress(fraction); };
-    const frep::raycast::Result result = frep::raycast::render(picture, in.Camera, shape,
-      in.Floor ? &*in.Floor : nullptr, style, &depth, cancel, progress);
+    // The solid stands on the floor: its height is the solid's lowest point, known only now
+    // that the tape is (the camera, fitted in RequestInformation, frames the whole box).
+    std::optional<frep::raycast::Floor> floor = in.Floor;
+    if (floor)
+    {
+      if (const std::optional<double> bottom =
+            frep::raycast::lowest_z(shape, 128, this->NumberOfThreads))
+      {
+        floor->height = *bottom;
+      }
+    }
+    const frep::raycast::Result result = frep::raycast::render(
+      picture, in.Camera, shape, floor ? &*floor : nullptr, style, &depth, cancel, progress);
     this->Rays = result.statistics.rays;
     this->Hits = result.statistics.hits;
     if (!result.ok())

@@ -149,9 +149,10 @@ public:
 
   ///@{
   /**
-   * A checkerboard floor under the box with the shape's shadow (default off): the plane z =
-   * zmin of the box, 8 x 8 squares over 1.6 times the box's larger side in x and y, centred
-   * under it, as `frepkit render --floor`; the camera then frames the floor too.
+   * A checkerboard floor under the shape with its shadow (default off): the plane z = the
+   * solid's lowest point (raycast::lowest_z, so the shape stands on it), 8 x 8 squares over 1.6
+   * times the box's larger side in x and y, centred under the box, as `frepkit render
+   * --floor`; the camera then frames the floor too.
    */
   vtkSetMacro(Floor, vtkTypeBool);
   vtkGetMacro(Floor, vtkTypeBool);

@@ -3,8 +3,9 @@
  * @brief   a vtkImplicitFunction over a 3-D vtkFRepObject
  *
  * vtkFRepImplicitFunction lets every VTK filter that takes an implicit function
- * (vtkSampleFunction, vtkCutter, vtkClipPolyData, vtkExtractGeometry, ParaView's Clip and
- * Slice) use an FRep shape: a vtkFRepObject whose dimension (number of free coordinates) is 3.
+ * (vtkSampleFunction, vtkCutter, vtkClipPolyData, vtkExtractGeometry, ...) use an FRep shape: a
+ * vtkFRepObject whose dimension (number of free coordinates) is 3. In ParaView, whose own Clip
+ * and Slice list a fixed set of functions, the plug-in's FRep Clip and FRep Cut take it.
  * Its free coordinates, in axis order, are x, y, z.
  *
  * SIGN CONVENTION: VTK's implicit functions are negative inside, FRep functions are positive

@@ -133,8 +133,9 @@ public:
   mapping::Section section(const mapping::Sample& sample, int worker);
 
   /// The sample's picture by the mapping's render method: its section meshed on `worker`'s
-  /// pool and rasterised, or drawn by rays on `threads` threads (with `floor`, if given). A
-  /// UserError when interrupted or failed.
+  /// pool and rasterised, or drawn by rays on `threads` threads (with `floor`, if given: the
+  /// floor scene's board, on which the section is stood by its lowest point,
+  /// mapping::stand_on_floor). A UserError when interrupted or failed.
   struct Picture
   {
     frep::render::Image image;

@@ -140,8 +140,13 @@ MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
     ro.threads = threads;
     ro.cancel = [] { return InterruptGuard::interrupted(); };
     ro.floor = floor;
+    // On the floor scene's board the solid stands on its lowest point.
+    const mapping::Sample placed = floor
+      ? mapping::stand_on_floor(
+          *inputs_.model, inputs_.parameters, inputs_.plan, sample, *floor, threads)
+      : sample;
     mapping::RaycastPicture r = mapping::raycast_sample(
-      *inputs_.model, inputs_.parameters, inputs_.plan, sample, camera, width, height, ro);
+      *inputs_.model, inputs_.parameters, inputs_.plan, placed, camera, width, height, ro);
     if (InterruptGuard::interrupted() || r.error == "cancelled")
     {
       throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
@@ -155,7 +160,11 @@ MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return p;
   }
-  const mapping::Section s = section(sample, worker);
+  mapping::Section s = section(sample, worker);
+  if (floor)
+  {
+    mapping::stand_on_floor(s, *floor); // the mesh's lowest vertex on the board
+  }
   const auto t1 = std::chrono::steady_clock::now();
   p.image =
     mapping::render_sample(inputs_.plan, s, sample, camera, width, height, settings, threads, floor);

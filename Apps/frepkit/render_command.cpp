@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace frepkit
 {
@@ -87,7 +88,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
   cmd->add_option("--supersample", options.supersample, "Rays per pixel along each axis (1..4)")
     ->capture_default_str()
     ->check(CLI::Range(1, 4));
-  cmd->add_flag("--floor", options.floor, "A checkerboard floor under the box, with the shadow");
+  cmd->add_flag("--floor",
+    options.floor,
+    "A checkerboard floor under the shape, at its lowest point (it stands on it), with its shadow");
   cmd->add_flag("--shadows", options.shadows, "The shape's shadows on itself");
   cmd->add_option("-j,--threads", options.threads, "Worker threads (0 = all cores)")
     ->capture_default_str()
@@ -143,6 +146,12 @@ int run_render(const RenderOptions& options)
   frep::raycast::Floor floor;
   if (options.floor)
   {
+    // The solid stands on the board: the floor at its lowest point, not at the box's bottom
+    // (a small shape in the default box would float far above its shadow).
+    if (const std::optional<double> bottom = frep::raycast::lowest_z(shape, 128, options.threads))
+    {
+      lo[2] = *bottom;
+    }
     floor = frep::raycast::floor_under(lo, hi);
   }
   const frep::render::Camera camera = frep::render::fit_box(lo,

@@ -1,7 +1,8 @@
 // frepkit render MODEL --fix x4=0.5,x5=0.5 -o picture.png: one picture of a 3-D cross-section
 // drawn directly from the function by rays (Raycast/raycast.h): no mesh, so no facets and no
 // detail lost below a grid. The camera frames the box from --view azimuth,elevation like the
-// mapping's pictures; --floor puts a checkerboard floor under the box with the shape's shadow.
+// mapping's pictures; --floor puts a checkerboard floor under the shape, at its lowest point,
+// with its shadow.
 #pragma once
 
 #include "user_inputs.h"

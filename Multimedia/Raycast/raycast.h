@@ -40,6 +40,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -92,9 +93,18 @@ struct Floor
 };
 
 /// A floor under the box [lo, hi] (world), a little wider than it: 8 x 8 squares centred
-/// under the box at its bottom. `lo` and `hi` are widened in x and y to the floor, so a camera
-/// fitted to them sees all of it.
+/// under the box at height lo[2] (callers that draw a solid raise lo[2] to its lowest_z first,
+/// so the solid stands on the floor). `lo` and `hi` are widened in x and y to the floor, so a
+/// camera fitted to them sees all of it.
 Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi);
+
+/// The lowest world z of `shape`'s solid as the ray caster draws it (F >= 0, cut by the box),
+/// seen by rays cast straight up: a `pixels` x `pixels` orthographic picture over the solid's
+/// bounds, then one as large over the 4 x 4 pixels around the lowest hit. Its error is about
+/// the slope there times 1 / (8 pixels) of the solid's width (none on a flat or a round
+/// bottom's lowest ray); a part thinner than a ray's spacing can be missed, as in any picture.
+/// Empty when no ray meets the solid. `threads` as Style's (0 = all cores).
+std::optional<double> lowest_z(const Shape& shape, int pixels = 128, int threads = 1);
 
 struct Style
 {

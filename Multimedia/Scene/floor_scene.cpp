@@ -1,9 +1,12 @@
 #include "Scene/floor_scene.h"
 
 #include "Scene/pictures.h"
+#include "Scene/section_raycast.h"
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <limits>
 
 namespace frep::mapping
 {
@@ -121,6 +124,60 @@ Sample on_floor(const FloorScene& scene, const Sample& frame)
   for (int r = 0; r < 3; ++r)
   {
     s.transform[4 * r + 3] += t[r]; // translation after the frame's own transform
+  }
+  return s;
+}
+
+double stand_on_floor(Section& section, const raycast::Floor& floor)
+{
+  mesh::Surface& surface = section.surface;
+  if (surface.dimension != 3 || surface.points.empty())
+  {
+    return 0.0;
+  }
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 2; i < surface.points.size(); i += 3)
+  {
+    lowest = std::min(lowest, surface.points[i]);
+  }
+  const double dz = floor.height - lowest;
+  for (std::size_t i = 2; i < surface.points.size(); i += 3)
+  {
+    surface.points[i] += dz; // a translation: normals and orientation stay
+  }
+  return dz;
+}
+
+Sample stand_on_floor(const Model& model,
+  const std::vector<double>& parameters,
+  const Plan& plan,
+  const Sample& frame,
+  const raycast::Floor& floor,
+  int threads)
+{
+  if (!raycast_supported(plan) || static_cast<int>(frame.values.size()) != model.x_dim())
+  {
+    return frame;
+  }
+  raycast::Shape shape;
+  try
+  {
+    shape.tape = model.specialise(section_specialisation(plan, frame, parameters));
+  }
+  catch (const std::exception&)
+  {
+    return frame; // raycast_sample reports the same failure when it draws the frame
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    shape.box[k] = frep::Interval{ plan.model_box[k].lo, plan.model_box[k].hi };
+  }
+  shape.to_world = raycast_world_map(plan, frame);
+  const std::optional<double> lowest = raycast::lowest_z(shape, 128, threads);
+  Sample s = frame;
+  if (lowest)
+  {
+    s.transform[4 * 2 + 3] += floor.height - *lowest; // world z after the frame's transform
   }
   return s;
 }

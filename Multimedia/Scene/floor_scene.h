@@ -4,10 +4,14 @@
 // is the cell that shows it — with the path drawn on it, and each frame's cross-section
 // standing on the floor at its (dynamic) point, its shadow cast by the key light. The camera is
 // fixed for the whole animation and frames the floor, so the shape is seen travelling its path.
+// "Standing": on_floor puts the frame's shape box over its point; stand_on_floor then moves
+// the section itself up or down until its lowest point (a mesh's lowest vertex, a ray-cast
+// solid's raycast::lowest_z) is on the board, so no shape floats above its shadow.
 #pragma once
 
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
+#include "Scene/section_mesh.h"
 
 #include "Raycast/raycast.h"
 #include "Render/camera.h"
@@ -32,8 +36,25 @@ struct FloorScene
 /// aspect.
 FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect);
 
-/// `frame` moved so that its section stands on the floor at its dynamic point: the frame's
-/// transform preceded by nothing and followed by the translation to that point.
+/// `frame` moved over its dynamic point on the floor, the bottom of its shape box on the board:
+/// the frame's transform followed by the translation to that point. stand_on_floor then puts
+/// the section itself on the board.
 Sample on_floor(const FloorScene& scene, const Sample& frame);
+
+/// A meshed 3-D section (world space, as make_section made it) moved vertically so that its
+/// lowest vertex is at the floor's height. Returns the distance moved (0 for an empty or 2-D
+/// section).
+double stand_on_floor(Section& section, const raycast::Floor& floor);
+
+/// The ray-cast counterpart: `frame` (already on_floor) with the vertical translation that puts
+/// the lowest point of its solid (raycast::lowest_z of the section's tape, mapped to the world
+/// as raycast_sample maps it) at the floor's height. Unchanged when the solid is empty or the
+/// plan cannot be ray-cast. `threads` 0 = all cores.
+Sample stand_on_floor(const Model& model,
+  const std::vector<double>& parameters,
+  const Plan& plan,
+  const Sample& frame,
+  const raycast::Floor& floor,
+  int threads = 1);
 
 } // namespace frep::mapping

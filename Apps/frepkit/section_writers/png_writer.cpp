@@ -124,10 +124,10 @@ bool encode(Sink& sink, std::int64_t width, std::int64_t height, const std::uint
   }
   else
   {
-    // Rows filtered by Sub or Up only, not libpng's trial of all five filters per row: the
-    // demo's frames encode in 11 ms instead of 20 at the same size, the spreadsheet in 48 ms
-    // instead of 81 for 2.5 % more bytes (measured on their PNGs, zlib level 3). (Palette
-    // pictures keep libpng's default: no filter.)
+    // Rows filtered by Sub or Up only, not libpng's trial of all five filters per row: a demo
+    // frame encodes in 8.4 ms instead of 15.4 (3.7 % fewer bytes), the spreadsheet in 39 ms
+    // instead of 64 for 2.5 % more bytes (Benchmarks/png_filter_benchmark.cpp on the demo's
+    // PNGs, zlib level 3). (Palette pictures keep libpng's default: no filter.)
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
   }
   png_text software{};

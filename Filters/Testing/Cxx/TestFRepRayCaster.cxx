@@ -3,7 +3,8 @@
 // distance along the view direction at the centre pixel and off the centre, +inf where nothing
 // is hit; the camera is fit_box's (distance from the box's bounding sphere); the picture's top
 // row is up (VTK's j grows upwards); Colour is sRGB RGBA with the background's alpha; the same
-// arrays for 1 and 2 threads (floor and self-shadows on); the floor adds pixels; a 5-D object,
+// arrays for 1 and 2 threads (floor and self-shadows on); the floor adds pixels and lies at the
+// sphere's lowest point (it stands on it); a 5-D object,
 // a flat box, an infinite azimuth and a picture too large for the ray caster are refused with
 // one error; an empty input is quiet; RequestInformation executes nothing upstream; an abort
 // seen by the cancel callback stops the rays; Set/Get, clamps, PrintSelf.
@@ -365,7 +366,8 @@ int TestFRepRayCaster(int, char*[])
       one.Depth.size() == two.Depth.size() &&
         std::memcmp(one.Depth.data(), two.Depth.data(), one.Depth.size() * sizeof(float)) == 0);
     // One ray per pixel (an edge pixel's depth is the nearest of its samples'): every pixel hit
-    // is on the floor plane z = -6 or on the sphere. Its world point from the camera: eye +
+    // is on the floor plane or on the sphere, and the floor plane is z = -Radius, the sphere's
+    // lowest point (the ball stands on the board; the box's bottom z = -6 would leave a gap). Its world point from the camera: eye +
     // Depth (forward + a right + b up), a and b the pixel centre's offsets in units of the
     // focal length (the engine's rows run top down: row = Height - 1 - j).
     r->SetSupersample(1);
@@ -401,7 +403,7 @@ int TestFRepRayCaster(int, char*[])
         {
           w[k] = eye[k] + lambda * (f[k] + a * right[k] + b * up[k]);
         }
-        onFloor += std::abs(w[2] + 6.0) < 1e-3 ? 1 : 0;
+        onFloor += std::abs(w[2] + Radius) < 1e-3 ? 1 : 0;
         onSphere += std::abs(std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) - Radius) < 1e-3;
       }
     }

@@ -1,6 +1,6 @@
 """Every proxy of the FRepKit plug-in with its defaults and with properties set: numbers of
 points and cells, bounds, time steps, field-data metadata, the input domain, and the FRep
-shape in Clip and Slice. pvpython, no rendering."""
+shape in FRep Clip and FRep Cut. pvpython, no rendering."""
 
 import math
 import os

@@ -349,8 +349,14 @@ CaseRun run_points(const ConformanceCase& c,
   }
   if (!session)
   {
+    // Counted apart (the summary's "unsup" column) and reported: a model that no longer
+    // compiles must fail the suite, not shrink it.
     run.tally.unsupported = run.tally.points;
     run.tally.errors = 0;
+    run.mismatches.push_back({ c.id(),
+      kDeclinedCase,
+      "the " + evaluator.name() + " evaluator declined the case: " +
+        (why_not.empty() ? std::string("no reason given") : why_not) });
     return run;
   }
   const bool exact_required = evaluator.requires_exact(c.category);

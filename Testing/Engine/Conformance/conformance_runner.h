@@ -48,7 +48,8 @@ public:
   /// Whether values must be bit-exact in `category` (else within 1e-12 relative).
   virtual bool requires_exact(const std::string& category) const = 0;
   /// A session for program->objects[object_index], or nullptr with `why_not` set when this
-  /// evaluator does not handle the program (counted as unsupported, not as a failure).
+  /// evaluator does not handle the program: its points count as unsupported and run_points
+  /// reports a kDeclinedCase mismatch, which fails a test unless the test expects it.
   virtual std::unique_ptr<EvaluationSession> start(std::shared_ptr<const ast::Program> program,
     int object_index,
     std::string& why_not) const = 0;
@@ -80,11 +81,15 @@ public:
     std::string& why_not) const override;
 };
 
+/// Mismatch::point when the evaluator declined the whole case (CaseEvaluator::start returned
+/// null, e.g. the model did not compile): a failure unless the test names it as expected.
+constexpr int kDeclinedCase = -2;
+
 /// One difference from the original.
 struct Mismatch
 {
   std::string case_id;
-  int point = -1; ///< index in ConformanceCase::points; -1 for the parse check
+  int point = -1; ///< index in ConformanceCase::points; -1 for the parse check; kDeclinedCase
   std::string what;
 };
 
@@ -98,7 +103,7 @@ struct Tally
   int wrong = 0;          ///< value points off (or an error where a value was expected)
   int errors = 0;         ///< error/abort points expected
   int errors_matched = 0; ///< ... reproduced with message, line and column
-  int unsupported = 0;    ///< points the evaluator declined
+  int unsupported = 0;    ///< points of cases the evaluator declined (each also a mismatch)
   // Parse checks (evaluator independent).
   int parse_cases = 0;
   int parse_outcome_ok = 0; ///< ok/none/error and, for errors, the line agree

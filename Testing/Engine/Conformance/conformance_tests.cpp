@@ -1,8 +1,9 @@
 // The conformance suite of the original HyperFun interpreter (hyperfun/conformance, 291 cases)
 // and the external models with recorded values (hyperfun/models), run through our parser and
 // every registered evaluator. One test per category and evaluator; a test fails on any
-// difference that is not listed in kKnownExceptions, and on a listed exception that no longer
-// occurs. A summary table (exact / within 1e-12 / wrong per category) is printed at the end.
+// difference that is not listed in kKnownExceptions (a case the evaluator declines, such as a
+// model that does not compile, is one), and on a listed exception that no longer occurs. A
+// summary table (exact / within 1e-12 / wrong / unsupported per category) is printed at the end.
 //
 // To plug in another evaluator: implement CaseEvaluator (conformance_runner.h), add it to
 // evaluator_by_name() and instantiate ConformanceEval with its name.
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <string>
@@ -32,7 +34,8 @@ struct KnownException
 {
   const char* evaluator; ///< "parser" (parse checks), "interpreter", ...
   const char* case_id;   ///< "<category>/<case>"
-  int point;             ///< index of the eval line in the case (0-based); -1 = the parse check
+  int point; ///< index of the eval line in the case (0-based); -1 = the parse check;
+             ///< kDeclinedCase = the evaluator declines the whole case (none is expected today)
   const char* reason;
 };
 
@@ -213,6 +216,48 @@ TEST(ConformanceSuite, LoadsEveryCase)
   // ../shared/hyperfun/models: 17 models from 8 sources.
   EXPECT_EQ(model_cases, 17);
   EXPECT_EQ(model_points, 5831);
+}
+
+/// An evaluator that handles nothing, as CompiledEvaluator does with a model that fails to
+/// compile.
+class DecliningEvaluator final : public CaseEvaluator
+{
+public:
+  std::string name() const override { return "declining"; }
+  bool requires_exact(const std::string&) const override { return true; }
+  std::unique_ptr<EvaluationSession> start(std::shared_ptr<const ast::Program>,
+    int,
+    std::string& why_not) const override
+  {
+    why_not = "compilation failed (test)";
+    return nullptr;
+  }
+};
+
+// A declined case must reach the test as a mismatch, not only as a count nobody checks.
+TEST(ConformanceSuite, ADeclinedCaseIsAMismatch)
+{
+  const Suite& s = suite();
+  ASSERT_TRUE(s.load_error.empty()) << s.load_error;
+  const DecliningEvaluator declining;
+  int declined = 0;
+  for (const ConformanceCase& c : s.cases)
+  {
+    if (c.points.empty() || !s.parsed.at(c.id()).ok())
+    {
+      continue;
+    }
+    const CaseRun run = run_points(c, s.parsed.at(c.id()), declining);
+    ASSERT_EQ(run.mismatches.size(), 1u) << c.id();
+    EXPECT_EQ(run.mismatches.front().point, kDeclinedCase);
+    EXPECT_NE(run.mismatches.front().what.find("compilation failed (test)"), std::string::npos);
+    EXPECT_EQ(run.tally.unsupported, run.tally.points);
+    if (++declined == 3)
+    {
+      break;
+    }
+  }
+  EXPECT_EQ(declined, 3);
 }
 
 class ConformanceParse : public ::testing::TestWithParam<std::string>

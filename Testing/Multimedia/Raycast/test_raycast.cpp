@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -257,6 +258,45 @@ TEST(Raycast, ProgressRisesToOneOnTheCallingThread)
   EXPECT_GT(values.front(), 0.0);
   EXPECT_LT(values.front(), 1.0);
   EXPECT_EQ(values.back(), 1.0);
+}
+
+
+// lowest_z: where a floor under the solid must be for the solid to stand on it (the floor scene
+// and `frepkit render --floor`). A ball's lowest point, also through a rotation and scale; a
+// flat bottom; the box's cap when the solid runs out of the box; a downward cone's tip; nothing
+// for an empty solid.
+TEST(Raycast, LowestPointOfTheSolid)
+{
+  rc::Shape ball;
+  ball.tape = tape_of("2.25 - (x[1] - 0.5)^2 - (x[2] + 0.25)^2 - (x[3] - 0.75)^2");
+  ball.box = { Interval{ -2, 2 }, Interval{ -2, 2 }, Interval{ -2, 2 } };
+  const std::optional<double> z = rc::lowest_z(ball);
+  ASSERT_TRUE(z);
+  EXPECT_NEAR(*z, 0.75 - 1.5, 1e-4);
+  // World = R (2 m) + (0, 0, -3), R a quarter turn about x: world z = 2 y - 3.
+  ball.to_world = { 2, 0, 0, 0, 0, 0, -2, 0, 0, 2, 0, -3 };
+  const std::optional<double> turned = rc::lowest_z(ball, 128, 2);
+  ASSERT_TRUE(turned);
+  EXPECT_NEAR(*turned, 2.0 * (-0.25 - 1.5) - 3.0, 2e-4);
+
+  rc::Shape slab = sphere_shape();
+  slab.tape = tape_of("x[3] + 0.5"); // z >= -0.5, cut by the box: a flat bottom
+  ASSERT_TRUE(rc::lowest_z(slab));
+  EXPECT_NEAR(*rc::lowest_z(slab), -0.5, 1e-6);
+  slab.tape = tape_of("1 - x[3]"); // z <= 1: the box's bottom cap
+  ASSERT_TRUE(rc::lowest_z(slab));
+  EXPECT_NEAR(*rc::lowest_z(slab), -2.0, 1e-6);
+
+  rc::Shape cone = sphere_shape();
+  cone.tape = tape_of("x[3] + 1 - sqrt(x[1]^2 + x[2]^2)"); // tip at (0, 0, -1), opening up
+  const std::optional<double> tip = rc::lowest_z(cone);
+  ASSERT_TRUE(tip);
+  EXPECT_GE(*tip, -1.0 - 1e-6);
+  EXPECT_LE(*tip, -1.0 + 4.0 * 4.0 / 128 / 128 * 4.0); // within a few of the fine rays' spacing
+
+  rc::Shape empty = sphere_shape();
+  empty.tape = tape_of("-1 - x[1]^2");
+  EXPECT_FALSE(rc::lowest_z(empty));
 }
 
 } // namespace

@@ -1,0 +1,113 @@
+// raycast::lowest_z: where a solid meets a floor under it. Found by the ray caster itself (rays
+// cast straight up, their first hits), so the point is the one the pictures draw: the same root
+// search, the same caps where the box cuts the solid.
+#include "Raycast/raycast.h"
+
+#include "Raycast/solid_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace frep::raycast
+{
+namespace
+{
+
+struct LowestHit
+{
+  double z, x, y;
+};
+
+/// The lowest first hit of a square orthographic picture looking up (+z) from height `below`,
+/// `half` world units from its centre (cx, cy) to each edge, one ray per pixel.
+std::optional<LowestHit> look_up(const Shape& shape,
+  double cx,
+  double cy,
+  double half,
+  double below,
+  int pixels,
+  int threads)
+{
+  render::Camera camera;
+  camera.position = { cx, cy, below };
+  camera.focal_point = { cx, cy, below + half };
+  camera.view_up = { 0.0, 1.0, 0.0 };
+  camera.orthographic = true;
+  camera.parallel_scale = half;
+  camera.near_distance = 1e-6 * half;
+  Style style;
+  style.render.supersample = 1;
+  style.render.threads = threads;
+  render::Image picture(pixels, pixels);
+  std::vector<float> depth;
+  if (!render(picture, camera, shape, nullptr, style, &depth).ok())
+  {
+    return std::nullopt;
+  }
+  const auto nearest = std::min_element(depth.begin(), depth.end());
+  if (nearest == depth.end() || !std::isfinite(*nearest))
+  {
+    return std::nullopt;
+  }
+  // The pixel's ray: rows run top down, the picture's right and up from the camera's frame.
+  const std::size_t i = static_cast<std::size_t>(nearest - depth.begin());
+  const double step = 2.0 * half / pixels;
+  const double a = (static_cast<double>(i % pixels) + 0.5) * step - half;
+  const double b = half - (static_cast<double>(i / pixels) + 0.5) * step;
+  const render::CameraFrame frame = render::camera_frame(camera);
+  return LowestHit{ below + *nearest,
+    cx + a * frame.right[0] + b * frame.up[0],
+    cy + a * frame.right[1] + b * frame.up[1] };
+}
+
+} // namespace
+
+std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
+{
+  if (!shape.tape || shape.tape->input_count != 3 || pixels < 2)
+  {
+    return std::nullopt;
+  }
+  const detail::SolidBounds bounds = detail::solid_bounds(shape.tape, shape.box, 4);
+  if (bounds.empty)
+  {
+    return std::nullopt;
+  }
+  // The world box of the solid's model box (the map is affine: the hull of its corners).
+  const std::array<double, 12>& m = shape.to_world;
+  std::array<double, 3> lo, hi;
+  lo.fill(std::numeric_limits<double>::infinity());
+  hi.fill(-std::numeric_limits<double>::infinity());
+  for (int c = 0; c < 8; ++c)
+  {
+    const std::array<double, 3> p{ (c & 1) ? bounds.box[0].hi : bounds.box[0].lo,
+      (c & 2) ? bounds.box[1].hi : bounds.box[1].lo,
+      (c & 4) ? bounds.box[2].hi : bounds.box[2].lo };
+    for (int r = 0; r < 3; ++r)
+    {
+      const double w = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3];
+      lo[r] = std::min(lo[r], w);
+      hi[r] = std::max(hi[r], w);
+    }
+  }
+  const double half = 0.51 * std::max({ hi[0] - lo[0], hi[1] - lo[1], 1e-9 });
+  const double below = lo[2] - 0.01 * std::max(hi[2] - lo[2], 2.0 * half) - 1e-9;
+  Shape solid = shape; // drawn plain: only the depth is read
+  solid.colour_function = {};
+  solid.opacity = 1.0;
+  const std::optional<LowestHit> coarse = look_up(
+    solid, 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), half, below, pixels, threads);
+  if (!coarse)
+  {
+    return std::nullopt;
+  }
+  // Again over the 4 x 4 coarse pixels around that hit: the lowest point of a round bottom lies
+  // between the coarse rays.
+  const double coarse_step = 2.0 * half / pixels;
+  const std::optional<LowestHit> fine =
+    look_up(solid, coarse->x, coarse->y, 2.0 * coarse_step, below, pixels, threads);
+  return fine ? std::min(coarse->z, fine->z) : coarse->z;
+}
+
+} // namespace frep::raycast

@@ -136,6 +136,17 @@ struct BlockBuffers
   BlockBuffers& operator=(const BlockBuffers&) = delete;
 };
 
+/// failed[p]: sample p raised an error or is NaN. (Through plain pointers: a byte store could
+/// otherwise change the buffers' own pointers, reloaded per sample.)
+void mark_failed(const std::uint32_t* errors, const double* values, std::size_t count,
+  std::uint8_t* failed)
+{
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    failed[p] = errors[p] != 0 || std::isnan(values[p]) ? 1 : 0;
+  }
+}
+
 /// The gradients of the block's first `count` samples that did not fail: pointwise evaluators,
 /// one per pool slot, over chunks of the block.
 void block_gradients(ThreadPool& pool, const std::shared_ptr<const Tape>& tape,
@@ -378,10 +389,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
           b.values.data(), b.errors.data(), std::span<double* const>(b.attribute_out));
         result.instructions += count * tape->code.size();
       }
-      for (std::size_t p = 0; p < count; ++p)
-      {
-        b.failed[p] = b.errors[p] != 0 || std::isnan(b.values[p]) ? 1 : 0;
-      }
+      mark_failed(b.errors.data(), b.values.data(), count, b.failed.data());
       if (options.gradients)
       {
         block_gradients(*pool, tape, slots, b, count);

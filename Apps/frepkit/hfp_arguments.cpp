@@ -183,57 +183,11 @@ private:
     }
     else if (key == "-g")
     {
-      if (has_value(key))
-      {
-        const std::string& text = take();
-        const std::vector<int> values = to_ints(text);
-        if (values.size() == 1 || values.size() == 3)
-        {
-          for (std::size_t k = 0; k < 3; ++k)
-          {
-            a.grid[k] = clamp(values[values.size() == 1 ? 0 : k], kHfpGridMin, kHfpGridMax, key);
-            if (values.size() == 1)
-            {
-              a.grid = { a.grid[0], a.grid[0], a.grid[0] };
-              break;
-            }
-          }
-        }
-        else
-        {
-          a.grid = { 30, 30, 30 };
-          invalid(text, key);
-        }
-      }
+      grid_option(key, a);
     }
     else if (key == "-gs")
     {
-      if (has_value(key))
-      {
-        const std::string& text = take();
-        const std::vector<double> v = to_doubles(text);
-        auto c = [&](double value) { return clamp(value, 0.001, 10.0, key); };
-        if (v.size() == 1)
-        {
-          const double step = c(v[0]);
-          a.slicing_step = { step, step, step };
-        }
-        else if (v.size() == 2)
-        {
-          // hfp: the first value for x and y, the second for z.
-          const double xy = c(v[0]);
-          a.slicing_step = { xy, xy, c(v[1]) };
-        }
-        else if (v.size() == 3)
-        {
-          a.slicing_step = { c(v[0]), c(v[1]), c(v[2]) };
-        }
-        else
-        {
-          a.slicing_step = { 1.0, 1.0, 1.0 };
-          invalid(text, key);
-        }
-      }
+      slicing_step_option(key, a);
     }
     else if (key == "-b")
     {
@@ -244,30 +198,7 @@ private:
     }
     else if (key == "-cl" || key == "-cf")
     {
-      if (has_value(key))
-      {
-        const std::string& text = take();
-        const std::vector<int> v = to_ints(text);
-        std::array<double, 3>& colour = key == "-cl" ? a.line_colour : a.face_colour;
-        if (v.size() == 1 || v.size() == 3)
-        {
-          for (std::size_t k = 0; k < 3; ++k)
-          {
-            colour[k] = clamp(v[v.size() == 1 ? 0 : k], 0, 255, key) / 255.0;
-            if (v.size() == 1)
-            {
-              colour = { colour[0], colour[0], colour[0] };
-              break;
-            }
-          }
-        }
-        else
-        {
-          colour = key == "-cl" ? std::array<double, 3>{ 0, 0, 0 }
-                                : std::array<double, 3>{ 0.196078, 0.784314, 0.313725 };
-          invalid(text, key);
-        }
-      }
+      colour_option(key, a);
     }
     else if (key == "-i")
     {
@@ -282,32 +213,11 @@ private:
     }
     else if (key == "-w")
     {
-      if (has_value(key))
-      {
-        const std::string& text = take();
-        const std::vector<int> v = to_ints(text);
-        if (v.size() == 1 || v.size() == 2)
-        {
-          a.window = { clamp(v[0], 160, 1600, key), clamp(v[v.size() - 1], 120, 1200, key) };
-        }
-        else
-        {
-          a.window = { 480, 320 };
-          invalid(text, key);
-        }
-      }
+      window_option(key, a);
     }
     else if (key == "-s")
     {
-      a.search = true;
-      if (has_value(key, false))
-      {
-        a.search_fraction = clamp(to_double(take()), 0.0001, 1.0, key);
-        if (a.search_fraction == 1.0)
-        {
-          a.search = false; // hfp: a search to within one cell is no search
-        }
-      }
+      search_option(key, a);
     }
     else if (key == "-r")
     {
@@ -347,24 +257,7 @@ private:
     }
     else if (key == "-d")
     {
-      if (has_value(key))
-      {
-        const std::string& text = take();
-        const std::vector<int> v = to_ints(text);
-        if (v.size() == 1 && v[0] >= 1 && v[0] <= 7)
-        {
-          a.display_mode = v[0];
-          a.normals = v[0] > 2; // modes 1 and 2 compute no normals
-        }
-        else
-        {
-          if (v.size() != 1)
-          {
-            a.display_mode = 5;
-          }
-          invalid(text, key);
-        }
-      }
+      display_option(key, a);
     }
     else if (key == "-sb")
     {
@@ -376,24 +269,172 @@ private:
     }
     else if (key == "-usedc")
     {
-      // hfp reads the next token whatever it is (even another option).
-      if (position_ >= args_.size())
-      {
-        messages_ << key << " requires an argument.\nUsing default value.\n";
-        return;
-      }
-      const std::string& text = take();
-      const std::vector<int> v = to_ints(text);
-      if (v.size() != 1)
-      {
-        invalid(text, key);
-      }
-      a.use_dc = v[0] != 0;
+      use_dc_option(key, a);
     }
     else if (key == "-ct")
     {
       a.attributes = true;
     }
+  }
+
+  /// -g N or NX,NY,NZ: samples per axis.
+  void grid_option(const std::string& key, HfpArguments& a)
+  {
+    if (has_value(key))
+    {
+      const std::string& text = take();
+      const std::vector<int> values = to_ints(text);
+      if (values.size() == 1 || values.size() == 3)
+      {
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          a.grid[k] = clamp(values[values.size() == 1 ? 0 : k], kHfpGridMin, kHfpGridMax, key);
+          if (values.size() == 1)
+          {
+            a.grid = { a.grid[0], a.grid[0], a.grid[0] };
+            break;
+          }
+        }
+      }
+      else
+      {
+        a.grid = { 30, 30, 30 };
+        invalid(text, key);
+      }
+    }
+  }
+
+  /// -gs S, SXY,SZ or SX,SY,SZ: the slicing step.
+  void slicing_step_option(const std::string& key, HfpArguments& a)
+  {
+    if (has_value(key))
+    {
+      const std::string& text = take();
+      const std::vector<double> v = to_doubles(text);
+      auto c = [&](double value) { return clamp(value, 0.001, 10.0, key); };
+      if (v.size() == 1)
+      {
+        const double step = c(v[0]);
+        a.slicing_step = { step, step, step };
+      }
+      else if (v.size() == 2)
+      {
+        // hfp: the first value for x and y, the second for z.
+        const double xy = c(v[0]);
+        a.slicing_step = { xy, xy, c(v[1]) };
+      }
+      else if (v.size() == 3)
+      {
+        a.slicing_step = { c(v[0]), c(v[1]), c(v[2]) };
+      }
+      else
+      {
+        a.slicing_step = { 1.0, 1.0, 1.0 };
+        invalid(text, key);
+      }
+    }
+  }
+
+  /// -cl / -cf: the line or face colour, one grey level or R,G,B in 0..255.
+  void colour_option(const std::string& key, HfpArguments& a)
+  {
+    if (has_value(key))
+    {
+      const std::string& text = take();
+      const std::vector<int> v = to_ints(text);
+      std::array<double, 3>& colour = key == "-cl" ? a.line_colour : a.face_colour;
+      if (v.size() == 1 || v.size() == 3)
+      {
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          colour[k] = clamp(v[v.size() == 1 ? 0 : k], 0, 255, key) / 255.0;
+          if (v.size() == 1)
+          {
+            colour = { colour[0], colour[0], colour[0] };
+            break;
+          }
+        }
+      }
+      else
+      {
+        colour = key == "-cl" ? std::array<double, 3>{ 0, 0, 0 }
+                              : std::array<double, 3>{ 0.196078, 0.784314, 0.313725 };
+        invalid(text, key);
+      }
+    }
+  }
+
+  /// -w W[,H]: the window size.
+  void window_option(const std::string& key, HfpArguments& a)
+  {
+    if (has_value(key))
+    {
+      const std::string& text = take();
+      const std::vector<int> v = to_ints(text);
+      if (v.size() == 1 || v.size() == 2)
+      {
+        a.window = { clamp(v[0], 160, 1600, key), clamp(v[v.size() - 1], 120, 1200, key) };
+      }
+      else
+      {
+        a.window = { 480, 320 };
+        invalid(text, key);
+      }
+    }
+  }
+
+  /// -s [F]: the surface search, to within F of a cell.
+  void search_option(const std::string& key, HfpArguments& a)
+  {
+    a.search = true;
+    if (has_value(key, false))
+    {
+      a.search_fraction = clamp(to_double(take()), 0.0001, 1.0, key);
+      if (a.search_fraction == 1.0)
+      {
+        a.search = false; // hfp: a search to within one cell is no search
+      }
+    }
+  }
+
+  /// -d M: the display mode 1..7.
+  void display_option(const std::string& key, HfpArguments& a)
+  {
+    if (has_value(key))
+    {
+      const std::string& text = take();
+      const std::vector<int> v = to_ints(text);
+      if (v.size() == 1 && v[0] >= 1 && v[0] <= 7)
+      {
+        a.display_mode = v[0];
+        a.normals = v[0] > 2; // modes 1 and 2 compute no normals
+      }
+      else
+      {
+        if (v.size() != 1)
+        {
+          a.display_mode = 5;
+        }
+        invalid(text, key);
+      }
+    }
+  }
+
+  /// -usedc 0|1: hfp reads the next token whatever it is (even another option).
+  void use_dc_option(const std::string& key, HfpArguments& a)
+  {
+    if (position_ >= args_.size())
+    {
+      messages_ << key << " requires an argument.\nUsing default value.\n";
+      return;
+    }
+    const std::string& text = take();
+    const std::vector<int> v = to_ints(text);
+    if (v.size() != 1)
+    {
+      invalid(text, key);
+    }
+    a.use_dc = v[0] != 0;
   }
 
   void mapping(const std::string& text, HfpArguments& a)

@@ -184,6 +184,38 @@ int run_cli_layers(const HfpArguments& a,
   return 0;
 }
 
+/// hfp's order: wrl, stl (ASCII, which wins over -stlb), pov; a path named twice is written
+/// once, by the last format (hfp overwrote it).
+std::vector<OutputFile> hfp_output_files(const HfpArguments& a)
+{
+  std::vector<OutputFile> files;
+  if (a.wrl)
+  {
+    files.push_back({ MeshFormat::Vrml, false, a.wrl_name });
+  }
+  if (a.stl || a.stlb)
+  {
+    files.push_back({ MeshFormat::Stl, a.stl, a.stl_name });
+  }
+  if (a.pov)
+  {
+    files.push_back({ MeshFormat::Pov, false, a.pov_name });
+  }
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < files.size(); ++j)
+    {
+      if (files[j].path == files[i].path)
+      {
+        files.erase(files.begin() + static_cast<std::ptrdiff_t>(i));
+        --i;
+        break;
+      }
+    }
+  }
+  return files;
+}
+
 } // namespace
 
 int run_hfp(const std::vector<std::string>& args)
@@ -253,33 +285,7 @@ int run_hfp(const std::vector<std::string>& args)
               << "]: the missing colour components are 0\n";
   }
 
-  // hfp's order: wrl, stl (ASCII, which wins over -stlb), pov; a path named twice is written
-  // once, by the last format (hfp overwrote it).
-  std::vector<OutputFile> files;
-  if (a.wrl)
-  {
-    files.push_back({ MeshFormat::Vrml, false, a.wrl_name });
-  }
-  if (a.stl || a.stlb)
-  {
-    files.push_back({ MeshFormat::Stl, a.stl, a.stl_name });
-  }
-  if (a.pov)
-  {
-    files.push_back({ MeshFormat::Pov, false, a.pov_name });
-  }
-  for (std::size_t i = 0; i < files.size(); ++i)
-  {
-    for (std::size_t j = i + 1; j < files.size(); ++j)
-    {
-      if (files[j].path == files[i].path)
-      {
-        files.erase(files.begin() + static_cast<std::ptrdiff_t>(i));
-        --i;
-        break;
-      }
-    }
-  }
+  const std::vector<OutputFile> files = hfp_output_files(a);
   // Opened before the work: an unwritable path fails at once and nothing is left behind.
   std::vector<std::unique_ptr<AtomicOutput>> outputs;
   for (const OutputFile& file : files)

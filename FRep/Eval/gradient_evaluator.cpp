@@ -18,6 +18,196 @@ namespace
 {
 namespace hf = frep::semantics;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The partial derivatives of one instruction's operation at its operands: d = ca da + cb db,
+/// or the whole derivative of one operand (`pick`: select, max, min).
+struct Partials
+{
+  double ca = 0;
+  double cb = 0;
+  const double* pick = nullptr;
+};
+
+/// HyperFun's a ^ b: locally a ^ n (n constant) for an integral b, else exp(b ln a).
+[[gnu::always_inline]] inline void hf_pow_partials(double a, double b, double r, Partials& p)
+{
+  if (std::fabs(a) < hf::kEps)
+  {
+    return; // constant 0 there
+  }
+  if ((b - std::floor(b)) < hf::kEps)
+  {
+    // a ^ n with n = HF_round(|b|) signed: locally constant in b.
+    // Beyond the int range hf_round gives INT_MIN, the repeated product runs no
+    // iteration and the value is the constant 1: derivative 0 (and -m would overflow,
+    // found by fuzz_hyperfun_eval under UBSan).
+    const int m = hf::hf_round(std::fabs(b));
+    if (m != std::numeric_limits<int>::min())
+    {
+      const double e = b < 0.0 ? -static_cast<double>(m) : static_cast<double>(m);
+      p.ca = e == 0 ? 0.0 : e * std::pow(a, e - 1);
+    }
+  }
+  else
+  {
+    p.ca = r * b / a;
+    p.cb = r * std::log(a);
+  }
+}
+
+/// Partials of the instruction at operand values a, b (c: Select) with result r; da, db, dc the
+/// operands' derivatives. Inlined into the evaluation loop's one switch.
+[[gnu::always_inline]] inline Partials partials(const Instruction& ins, double a, double b,
+  double r, const double* da, const double* db, const double* dc)
+{
+  Partials p;
+  switch (ins.op)
+  {
+    case Opcode::Add:
+      p.ca = 1;
+      p.cb = 1;
+      break;
+    case Opcode::Sub:
+      p.ca = 1;
+      p.cb = -1;
+      break;
+    case Opcode::Mul:
+      p.ca = b;
+      p.cb = a;
+      break;
+    case Opcode::Div:
+      p.ca = 1 / b;
+      p.cb = -a / (b * b);
+      break;
+    case Opcode::Neg:
+      p.ca = -1;
+      break;
+    case Opcode::Square:
+      p.ca = 2 * a;
+      break;
+    case Opcode::Abs:
+      p.ca = a > 0 ? 1.0 : (a < 0 ? -1.0 : 0.0);
+      break;
+    case Opcode::Sqrt:
+      p.ca = 0.5 / r;
+      break;
+    case Opcode::Exp:
+      p.ca = r;
+      break;
+    case Opcode::Log:
+      p.ca = 1 / a;
+      break;
+    case Opcode::Log10:
+      p.ca = 1 / (a * std::numbers::ln10);
+      break;
+    case Opcode::Sin:
+      p.ca = std::cos(a);
+      break;
+    case Opcode::Cos:
+      p.ca = -std::sin(a);
+      break;
+    case Opcode::Tan:
+      p.ca = 1 + r * r;
+      break;
+    case Opcode::Asin:
+      p.ca = 1 / std::sqrt(1 - a * a);
+      break;
+    case Opcode::Acos:
+      p.ca = -1 / std::sqrt(1 - a * a);
+      break;
+    case Opcode::Atan:
+      p.ca = 1 / (1 + a * a);
+      break;
+    case Opcode::Sinh:
+      p.ca = std::cosh(a);
+      break;
+    case Opcode::Cosh:
+      p.ca = std::sinh(a);
+      break;
+    case Opcode::Tanh:
+      p.ca = 1 - r * r;
+      break;
+    case Opcode::Atan2:
+    {
+      const double q = a * a + b * b;
+      p.ca = b / q;
+      p.cb = -a / q;
+      break;
+    }
+    case Opcode::Pow:
+      p.ca = b == 0 ? 0.0 : b * std::pow(a, b - 1);
+      p.cb = a > 0 ? r * std::log(a) : 0.0;
+      break;
+    case Opcode::Frac:
+      p.ca = std::isfinite(a) ? 1.0 : 0.0;
+      break;
+    case Opcode::Fmod:
+      // fmod(a, b) = a - q b with the integer q = trunc(a / b), locally constant.
+      p.ca = 1;
+      p.cb = -std::trunc((a - r) / b);
+      break;
+    case Opcode::HfPow:
+      hf_pow_partials(a, b, r, p);
+      break;
+    case Opcode::HfPowInt:
+      if (std::fabs(a) >= hf::kEps && ins.index != 0)
+      {
+        p.ca = ins.index * std::pow(a, ins.index - 1);
+      }
+      break;
+    case Opcode::Max:
+      p.pick = (a > b) ? da : db;
+      break;
+    case Opcode::Min:
+      p.pick = (a < b) ? da : db;
+      break;
+    case Opcode::Union:
+    case Opcode::Intersect:
+    case Opcode::UnionPlain:
+    case Opcode::IntersectPlain:
+    {
+      // d/dl (l + r ± sqrt(l² + r²)) = 1 ± l / sqrt(l² + r²); at the origin, where it is not
+      // differentiable, the square-root term is left out.
+      const double s = std::sqrt(a * a + b * b);
+      const double sign = ins.op == Opcode::Union || ins.op == Opcode::UnionPlain ? 1.0 : -1.0;
+      p.ca = s > 0 ? 1 + sign * a / s : 1.0;
+      p.cb = s > 0 ? 1 + sign * b / s : 1.0;
+      break;
+    }
+    case Opcode::Select:
+      p.pick = a != 0.0 ? db : dc;
+      break;
+    default:
+      break; // constants, steps, comparisons, logic: derivative 0
+  }
+  return p;
+}
+
+/// d = ca da + cb db over the n inputs, or a copy of the picked operand's derivative.
+[[gnu::always_inline]] inline void combine(double* d, const Partials& p, const double* da,
+  const double* db, std::size_t n)
+{
+  if (p.pick != nullptr)
+  {
+    if (p.pick != d)
+    {
+      std::copy(p.pick, p.pick + n, d);
+    }
+  }
+  else
+  {
+    // Operands may share the output slot: read before write, lane by lane. A zero partial
+    // or a zero operand derivative contributes nothing, even where the other is infinite
+    // (sqrt at 0 of a constant).
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const double x = (p.ca == 0 || da[k] == 0) ? 0.0 : p.ca * da[k];
+      const double y = (p.cb == 0 || db[k] == 0) ? 0.0 : p.cb * db[k];
+      d[k] = x + y;
+    }
+  }
+}
+
 } // namespace
 
 GradientEvaluator::GradientEvaluator(std::shared_ptr<const Tape> tape)
@@ -177,169 +367,7 @@ double GradientEvaluator::evaluate(std::span<const double> inputs, std::span<dou
     const double* db = derivatives_.data() + static_cast<std::size_t>(ins.b) * n;
     const double* dc = derivatives_.data() + static_cast<std::size_t>(ins.c) * n;
     const double r = eval::apply(ins, a, b, c);
-    // d = ca * da + cb * db, with the partials of the operation at (a, b).
-    double ca = 0;
-    double cb = 0;
-    const double* pick = nullptr; // the whole derivative of one operand (select, max, min)
-    switch (op)
-    {
-      case Opcode::Add:
-        ca = 1;
-        cb = 1;
-        break;
-      case Opcode::Sub:
-        ca = 1;
-        cb = -1;
-        break;
-      case Opcode::Mul:
-        ca = b;
-        cb = a;
-        break;
-      case Opcode::Div:
-        ca = 1 / b;
-        cb = -a / (b * b);
-        break;
-      case Opcode::Neg:
-        ca = -1;
-        break;
-      case Opcode::Square:
-        ca = 2 * a;
-        break;
-      case Opcode::Abs:
-        ca = a > 0 ? 1.0 : (a < 0 ? -1.0 : 0.0);
-        break;
-      case Opcode::Sqrt:
-        ca = 0.5 / r;
-        break;
-      case Opcode::Exp:
-        ca = r;
-        break;
-      case Opcode::Log:
-        ca = 1 / a;
-        break;
-      case Opcode::Log10:
-        ca = 1 / (a * std::numbers::ln10);
-        break;
-      case Opcode::Sin:
-        ca = std::cos(a);
-        break;
-      case Opcode::Cos:
-        ca = -std::sin(a);
-        break;
-      case Opcode::Tan:
-        ca = 1 + r * r;
-        break;
-      case Opcode::Asin:
-        ca = 1 / std::sqrt(1 - a * a);
-        break;
-      case Opcode::Acos:
-        ca = -1 / std::sqrt(1 - a * a);
-        break;
-      case Opcode::Atan:
-        ca = 1 / (1 + a * a);
-        break;
-      case Opcode::Sinh:
-        ca = std::cosh(a);
-        break;
-      case Opcode::Cosh:
-        ca = std::sinh(a);
-        break;
-      case Opcode::Tanh:
-        ca = 1 - r * r;
-        break;
-      case Opcode::Atan2:
-      {
-        const double q = a * a + b * b;
-        ca = b / q;
-        cb = -a / q;
-        break;
-      }
-      case Opcode::Pow:
-        ca = b == 0 ? 0.0 : b * std::pow(a, b - 1);
-        cb = a > 0 ? r * std::log(a) : 0.0;
-        break;
-      case Opcode::Frac:
-        ca = std::isfinite(a) ? 1.0 : 0.0;
-        break;
-      case Opcode::Fmod:
-        // fmod(a, b) = a - q b with the integer q = trunc(a / b), locally constant.
-        ca = 1;
-        cb = -std::trunc((a - r) / b);
-        break;
-      case Opcode::HfPow:
-        if (std::fabs(a) < hf::kEps)
-        {
-          break; // constant 0 there
-        }
-        if ((b - std::floor(b)) < hf::kEps)
-        {
-          // a ^ n with n = HF_round(|b|) signed: locally constant in b.
-          // Beyond the int range hf_round gives INT_MIN, the repeated product runs no
-          // iteration and the value is the constant 1: derivative 0 (and -m would overflow,
-          // found by fuzz_hyperfun_eval under UBSan).
-          const int m = hf::hf_round(std::fabs(b));
-          if (m != std::numeric_limits<int>::min())
-          {
-            const double e = b < 0.0 ? -static_cast<double>(m) : static_cast<double>(m);
-            ca = e == 0 ? 0.0 : e * std::pow(a, e - 1);
-          }
-        }
-        else
-        {
-          ca = r * b / a;
-          cb = r * std::log(a);
-        }
-        break;
-      case Opcode::HfPowInt:
-        if (std::fabs(a) >= hf::kEps && ins.index != 0)
-        {
-          ca = ins.index * std::pow(a, ins.index - 1);
-        }
-        break;
-      case Opcode::Max:
-        pick = (a > b) ? da : db;
-        break;
-      case Opcode::Min:
-        pick = (a < b) ? da : db;
-        break;
-      case Opcode::Union:
-      case Opcode::Intersect:
-      case Opcode::UnionPlain:
-      case Opcode::IntersectPlain:
-      {
-        // d/dl (l + r ± sqrt(l² + r²)) = 1 ± l / sqrt(l² + r²); at the origin, where it is not
-        // differentiable, the square-root term is left out.
-        const double s = std::sqrt(a * a + b * b);
-        const double sign = op == Opcode::Union || op == Opcode::UnionPlain ? 1.0 : -1.0;
-        ca = s > 0 ? 1 + sign * a / s : 1.0;
-        cb = s > 0 ? 1 + sign * b / s : 1.0;
-        break;
-      }
-      case Opcode::Select:
-        pick = a != 0.0 ? db : dc;
-        break;
-      default:
-        break; // constants, steps, comparisons, logic: derivative 0
-    }
-    if (pick != nullptr)
-    {
-      if (pick != d)
-      {
-        std::copy(pick, pick + n, d);
-      }
-    }
-    else
-    {
-      // Operands may share the output slot: read before write, lane by lane. A zero partial
-      // or a zero operand derivative contributes nothing, even where the other is infinite
-      // (sqrt at 0 of a constant).
-      for (std::size_t k = 0; k < n; ++k)
-      {
-        const double x = (ca == 0 || da[k] == 0) ? 0.0 : ca * da[k];
-        const double y = (cb == 0 || db[k] == 0) ? 0.0 : cb * db[k];
-        d[k] = x + y;
-      }
-    }
+    combine(d, partials(ins, a, b, r, da, db, dc), da, db, n);
     v[ins.out] = r;
   }
   if (error != 0 || tape.outputs.empty())

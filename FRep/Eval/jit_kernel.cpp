@@ -242,6 +242,10 @@ private:
   void arithmetic(PdOp op, int dst, int src1, const Operand& src2);
   void compare(int dst, int src1, const Operand& src2, Cmp predicate);
   void instruction(std::size_t k);
+  void r_function(const Instruction& ins, int dst);
+  void select(const Instruction& ins, int dst);
+  void hf_pow_int(const Instruction& ins, int dst);
+  void error_if(const Instruction& ins);
   void call_out(std::size_t k);
   void find_live_registers();
 
@@ -526,6 +530,85 @@ void TapeCompiler::compare(int dst, int src1, const Operand& src2, Cmp predicate
 
 // Each case writes its destination register only with its last machine instruction, so a
 // destination that is also an operand's register is read before it is overwritten.
+// The longer cases of instruction(), each writing `dst` only with its last machine instruction.
+
+/// The R-functions.
+void TapeCompiler::r_function(const Instruction& ins, int dst)
+{
+  x86::Emitter& e = *e_;
+  // (l + r) ± sqrt(|l*l + r*r - 0*r*l|) in the original's order; the plain forms have no
+  // 0*r*l term and no fabs; the R-functions' final 1.0 * (...) is the identity on doubles.
+  const bool plain = ins.op == Opcode::UnionPlain || ins.op == Opcode::IntersectPlain;
+  const bool unite = ins.op == Opcode::Union || ins.op == Opcode::UnionPlain;
+  const int l = in_register(value(ins.a), kT4);
+  const int r = in_register(value(ins.b), kT5);
+  e.pd(PdOp::Add, kT0, l, r);
+  e.pd(PdOp::Mul, kT1, l, l);
+  e.pd(PdOp::Mul, kT2, r, r);
+  e.pd(PdOp::Add, kT1, kT1, kT2);
+  if (!plain)
+  {
+    arithmetic(PdOp::Mul, kT2, r, fixed(kZero)); // 0.0 * r (exact either way round)
+    e.pd(PdOp::Mul, kT2, kT2, l);
+    e.pd(PdOp::Sub, kT1, kT1, kT2);
+    arithmetic(PdOp::And, kT1, kT1, fixed(kAbsMask));
+  }
+  e.pd(PdOp::Sqrt, kT1, 0, kT1);
+  e.pd(unite ? PdOp::Add : PdOp::Sub, dst, kT0, kT1);
+}
+
+/// a != 0 ? b : c, true for NaN as in C.
+void TapeCompiler::select(const Instruction& ins, int dst)
+{
+  x86::Emitter& e = *e_;
+  compare(kT0, in_register(value(ins.a), kT4), fixed(kZero), Cmp::NeqUQ);
+  const int otherwise = in_register(value(ins.c), kT5);
+  const Operand chosen = value(ins.b);
+  if (chosen.reg >= 0)
+  {
+    e.vblendvpd(dst, otherwise, chosen.reg, kT0);
+  }
+  else
+  {
+    e.vblendvpd(dst, otherwise, chosen.mem, kT0);
+  }
+}
+
+/// hf_pow_int: v = 1.0, v *= b |n| times, 1 / v for n < 0; 0 where |b| < EPS.
+void TapeCompiler::hf_pow_int(const Instruction& ins, int dst)
+{
+  x86::Emitter& e = *e_;
+  const int base = in_register(value(ins.a), kT4);
+  e.vmovupd_load(kT0, fixed(kOne).mem);
+  const int n = ins.index < 0 ? -ins.index : ins.index;
+  for (int i = 0; i < n; ++i)
+  {
+    e.pd(PdOp::Mul, kT0, kT0, base);
+  }
+  if (ins.index < 0)
+  {
+    e.vmovupd_load(kT1, fixed(kOne).mem);
+    e.pd(PdOp::Div, kT0, kT1, kT0);
+  }
+  arithmetic(PdOp::And, kT2, base, fixed(kAbsMask));
+  compare(kT2, kT2, fixed(kEpsilon), Cmp::LtOQ);
+  e.pd(PdOp::AndNot, dst, kT2, kT0); // +0.0 where |b| < EPS
+}
+
+/// ErrorIf: lanes where a != 0 and no error yet take this error id (held as a double); writes no
+/// slot.
+void TapeCompiler::error_if(const Instruction& ins)
+{
+  x86::Emitter& e = *e_;
+  compare(kT0, in_register(value(ins.a), kT4), fixed(kZero), Cmp::NeqUQ);
+  const Mem errors = x86::ptr(Gp::rsp, kFrameErrors + chunk_ * kVector);
+  e.vmovupd_load(kT1, errors);
+  compare(kT2, kT1, fixed(kZero), Cmp::EqOQ);
+  e.pd(PdOp::And, kT0, kT0, kT2);
+  e.vblendvpd(kT1, kT1, constant(static_cast<double>(ins.index)).mem, kT0);
+  e.vmovupd_store(errors, kT1);
+}
+
 void TapeCompiler::instruction(std::size_t k)
 {
   x86::Emitter& e = *e_;
@@ -588,28 +671,8 @@ void TapeCompiler::instruction(std::size_t k)
     case Opcode::Intersect:
     case Opcode::UnionPlain:
     case Opcode::IntersectPlain:
-    {
-      // (l + r) ± sqrt(|l*l + r*r - 0*r*l|) in the original's order; the plain forms have no
-      // 0*r*l term and no fabs; the R-functions' final 1.0 * (...) is the identity on doubles.
-      const bool plain = ins.op == Opcode::UnionPlain || ins.op == Opcode::IntersectPlain;
-      const bool unite = ins.op == Opcode::Union || ins.op == Opcode::UnionPlain;
-      const int l = a(kT4);
-      const int r = b(kT5);
-      e.pd(PdOp::Add, kT0, l, r);
-      e.pd(PdOp::Mul, kT1, l, l);
-      e.pd(PdOp::Mul, kT2, r, r);
-      e.pd(PdOp::Add, kT1, kT1, kT2);
-      if (!plain)
-      {
-        arithmetic(PdOp::Mul, kT2, r, fixed(kZero)); // 0.0 * r (exact either way round)
-        e.pd(PdOp::Mul, kT2, kT2, l);
-        e.pd(PdOp::Sub, kT1, kT1, kT2);
-        arithmetic(PdOp::And, kT1, kT1, fixed(kAbsMask));
-      }
-      e.pd(PdOp::Sqrt, kT1, 0, kT1);
-      e.pd(unite ? PdOp::Add : PdOp::Sub, dst, kT0, kT1);
+      r_function(ins, dst);
       break;
-    }
     case Opcode::Eq:
     case Opcode::Ne:
       arithmetic(PdOp::Sub, kT0, a(kT4), operand(1));
@@ -646,53 +709,14 @@ void TapeCompiler::instruction(std::size_t k)
       boolean(kT0);
       break;
     case Opcode::Select:
-    {
-      // a != 0 ? b : c, true for NaN as in C
-      compare(kT0, a(kT4), fixed(kZero), Cmp::NeqUQ);
-      const int otherwise = in_register(operand(2), kT5);
-      const Operand chosen = operand(1);
-      if (chosen.reg >= 0)
-      {
-        e.vblendvpd(dst, otherwise, chosen.reg, kT0);
-      }
-      else
-      {
-        e.vblendvpd(dst, otherwise, chosen.mem, kT0);
-      }
+      select(ins, dst);
       break;
-    }
     case Opcode::HfPowInt:
-    {
-      // hf_pow_int: v = 1.0, v *= b |n| times, 1 / v for n < 0; 0 where |b| < EPS
-      const int base = a(kT4);
-      e.vmovupd_load(kT0, fixed(kOne).mem);
-      const int n = ins.index < 0 ? -ins.index : ins.index;
-      for (int i = 0; i < n; ++i)
-      {
-        e.pd(PdOp::Mul, kT0, kT0, base);
-      }
-      if (ins.index < 0)
-      {
-        e.vmovupd_load(kT1, fixed(kOne).mem);
-        e.pd(PdOp::Div, kT0, kT1, kT0);
-      }
-      arithmetic(PdOp::And, kT2, base, fixed(kAbsMask));
-      compare(kT2, kT2, fixed(kEpsilon), Cmp::LtOQ);
-      e.pd(PdOp::AndNot, dst, kT2, kT0); // +0.0 where |b| < EPS
+      hf_pow_int(ins, dst);
       break;
-    }
     case Opcode::ErrorIf:
-    {
-      // lanes where a != 0 and no error yet take this error id (held as a double)
-      compare(kT0, a(kT4), fixed(kZero), Cmp::NeqUQ);
-      const Mem errors = x86::ptr(Gp::rsp, kFrameErrors + chunk_ * kVector);
-      e.vmovupd_load(kT1, errors);
-      compare(kT2, kT1, fixed(kZero), Cmp::EqOQ);
-      e.pd(PdOp::And, kT0, kT0, kT2);
-      e.vblendvpd(kT1, kT1, constant(static_cast<double>(ins.index)).mem, kT0);
-      e.vmovupd_store(errors, kT1);
+      error_if(ins);
       return; // writes no slot
-    }
     default:
       return; // not reached: jit_supports() refused the tape
   }

@@ -86,23 +86,40 @@ std::uint32_t TapeSimplifier::demand(std::uint32_t slot)
   return wanted_[slot];
 }
 
-std::shared_ptr<const Tape> TapeSimplifier::simplify(
-  const Tape& tape, std::span<const Choice> choices)
+void TapeSimplifier::keep_call(const Tape& tape, const Instruction& ins, std::size_t i)
 {
-  if (choices.size() != tape.code.size())
+  const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
+  std::vector<std::uint32_t> out;
+  out.reserve(site.outputs.size());
+  for (std::uint32_t s : site.outputs)
   {
-    throw std::invalid_argument("TapeSimplifier::simplify: one choice per instruction expected");
+    out.push_back(wanted_[s] != kNone ? wanted_[s] : fresh_value()); // (written, unread)
   }
-  if (std::all_of(choices.begin(), choices.end(), [](Choice c) { return c == Choice::Keep; }))
+  for (std::uint32_t s : site.outputs)
   {
-    return nullptr;
+    wanted_[s] = kNone;
   }
+  std::vector<std::uint32_t> in;
+  in.reserve(site.inputs.size());
+  for (std::uint32_t s : site.inputs)
+  {
+    in.push_back(demand(s));
+  }
+  Instruction n = ins;
+  n.index = static_cast<std::int32_t>(site_inputs_.size());
+  n.c = static_cast<std::uint32_t>(i); // the original site, until pass (3)
+  site_inputs_.push_back(std::move(in));
+  site_outputs_.push_back(std::move(out));
+  ssa_.push_back(n);
+}
 
-  // (1) Backward over the tape. wanted_[slot]: the value (SSA) that the instructions kept after
-  // this point read from `slot`, or kNone. A kept instruction defines the value wanted from its
-  // out slot and then wants its operands; a decided one renames (its value is the chosen
-  // operand's: the two values are merged) or becomes a constant; one whose value nobody wants
-  // is dropped. ErrorIf (unless decided) and Call are always kept: they can set the error.
+// (1) Backward over the tape. wanted_[slot]: the value (SSA) that the instructions kept after
+// this point read from `slot`, or kNone. A kept instruction defines the value wanted from its
+// out slot and then wants its operands; a decided one renames (its value is the chosen
+// operand's: the two values are merged) or becomes a constant; one whose value nobody wants
+// is dropped. ErrorIf (unless decided) and Call are always kept: they can set the error.
+void TapeSimplifier::keep_backward(const Tape& tape, std::span<const Choice> choices)
+{
   wanted_.assign(tape.slot_count, kNone);
   merged_.clear();
   ssa_.clear();
@@ -129,29 +146,7 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
     }
     if (ins.op == Opcode::Call)
     {
-      const CallSite& site = tape.calls[static_cast<std::size_t>(ins.index)];
-      std::vector<std::uint32_t> out;
-      out.reserve(site.outputs.size());
-      for (std::uint32_t s : site.outputs)
-      {
-        out.push_back(wanted_[s] != kNone ? wanted_[s] : fresh_value()); // (written, unread)
-      }
-      for (std::uint32_t s : site.outputs)
-      {
-        wanted_[s] = kNone;
-      }
-      std::vector<std::uint32_t> in;
-      in.reserve(site.inputs.size());
-      for (std::uint32_t s : site.inputs)
-      {
-        in.push_back(demand(s));
-      }
-      Instruction n = ins;
-      n.index = static_cast<std::int32_t>(site_inputs_.size());
-      n.c = static_cast<std::uint32_t>(i); // the original site, until pass (3)
-      site_inputs_.push_back(std::move(in));
-      site_outputs_.push_back(std::move(out));
-      ssa_.push_back(n);
+      keep_call(tape, ins, i);
       continue;
     }
     const std::uint32_t v = wanted_[ins.out];
@@ -213,8 +208,11 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
     }
   }
   std::reverse(ssa_.begin(), ssa_.end());
+}
 
-  // (2) Forward over the survivors: the merged names resolved, and each value's last reader.
+// (2) Forward over the survivors: the merged names resolved, and each value's last reader.
+void TapeSimplifier::resolve_names()
+{
   const auto values = static_cast<std::uint32_t>(merged_.size());
   last_use_.assign(values, kNone);
   for (std::uint32_t j = 0; j < ssa_.size(); ++j)
@@ -259,15 +257,18 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
     v = find(v);
     last_use_[v] = kForever;
   }
+}
 
-  // (3) Registers: a value's register is free again once its last reader has run (never for
-  // that reader's own result: the batch kernel relies on an instruction not writing a slot it
-  // reads, as the emitter does).
+// (3) Registers: a value's register is free again once its last reader has run (never for
+// that reader's own result: the batch kernel relies on an instruction not writing a slot it
+// reads, as the emitter does).
+std::shared_ptr<Tape> TapeSimplifier::assign_registers(const Tape& tape)
+{
   auto result = std::make_shared<Tape>();
   result->code.reserve(ssa_.size());
   result->input_count = tape.input_count;
   result->errors = tape.errors;
-  slot_of_.assign(values, kNone);
+  slot_of_.assign(merged_.size(), kNone);
   free_slots_.clear();
   std::uint32_t slot_count = 0;
   const auto take = [&]
@@ -358,6 +359,24 @@ std::shared_ptr<const Tape> TapeSimplifier::simplify(
   result->slot_count = std::max<std::uint32_t>(slot_count, 1);
   result->can_fail = std::any_of(result->code.begin(), result->code.end(),
     [](const Instruction& n) { return n.op == Opcode::ErrorIf || n.op == Opcode::Call; });
+  return result;
+}
+
+std::shared_ptr<const Tape> TapeSimplifier::simplify(
+  const Tape& tape, std::span<const Choice> choices)
+{
+  if (choices.size() != tape.code.size())
+  {
+    throw std::invalid_argument("TapeSimplifier::simplify: one choice per instruction expected");
+  }
+  if (std::all_of(choices.begin(), choices.end(), [](Choice c) { return c == Choice::Keep; }))
+  {
+    return nullptr;
+  }
+
+  keep_backward(tape, choices);
+  resolve_names();
+  std::shared_ptr<Tape> result = assign_registers(tape);
   last_length_ = result->code.size();
   return result;
 }

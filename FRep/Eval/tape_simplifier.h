@@ -80,6 +80,12 @@ private:
   std::uint32_t find(std::uint32_t value);  // the representative of merged names
   std::uint32_t fresh_value();
   std::uint32_t demand(std::uint32_t slot); // the value wanted from slot (new if none yet)
+  // The three passes of simplify (tape_simplifier.cpp): (1) what survives, as values, in ssa_;
+  // (2) merged names resolved and last readers found; (3) registers, into the result.
+  void keep_backward(const Tape& tape, std::span<const Choice> choices);
+  void keep_call(const Tape& tape, const Instruction& ins, std::size_t i); // (1), a Call
+  void resolve_names();
+  std::shared_ptr<Tape> assign_registers(const Tape& tape);
 
   std::vector<std::uint32_t> wanted_;   // per original slot: value read from it later, or none
   std::vector<std::uint32_t> merged_;   // per value: union-find parent (renamed values)

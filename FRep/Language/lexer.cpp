@@ -212,6 +212,122 @@ Token Lexer::next()
   }
 }
 
+/// A "--" comment to the end of the line (is_comment set), or an over-long one (Illegal).
+Token Lexer::scan_comment(Token token, bool& is_comment)
+{
+  advance(2);
+  std::size_t count = 0;
+  while (peek() != '\n' && peek() != '\0')
+  {
+    // With CR accepted, the CR of a CRLF line end is not part of the comment's length.
+    const bool line_end_cr =
+      peek() == '\r' && peek(1) == '\n' && options_.accept_carriage_return;
+    if (!line_end_cr && count >= kMaxLexemLength)
+    {
+      // The original stops reading after 256 characters and rejects the token; skip the
+      // rest of the line so the next token starts on the next line.
+      while (peek() != '\n' && peek() != '\0')
+      {
+        advance();
+      }
+      token.kind = TokenKind::Illegal;
+      token.error = LexError::LongComment;
+      token.length = pos_ - token.offset;
+      return token;
+    }
+    if (!line_end_cr)
+    {
+      ++count;
+    }
+    advance();
+  }
+  is_comment = true;
+  token.kind = TokenKind::End;
+  return token;
+}
+
+/// A "..." string on one line, or an unterminated one (Illegal).
+Token Lexer::scan_string(Token token)
+{
+  advance();
+  std::string contents;
+  while (
+    peek() != '"' && peek() != '\0' && peek() != '\n' && contents.size() < kMaxLexemLength - 1)
+  {
+    contents.push_back(peek());
+    advance();
+  }
+  if (peek() != '"')
+  {
+    token.kind = TokenKind::Illegal;
+    token.error = LexError::UnterminatedString;
+    token.length = pos_ - token.offset;
+    return token;
+  }
+  advance();
+  token.kind = TokenKind::String;
+  token.text = std::move(contents);
+  token.length = pos_ - token.offset;
+  return token;
+}
+
+/// A number literal (the original's forms), or a malformed one (Illegal).
+Token Lexer::scan_number(Token token)
+{
+  const NumberLiteral literal = scan_number_literal(text_, pos_);
+  advance(literal.length);
+  token.length = literal.length;
+  if (literal.ok)
+  {
+    token.kind = TokenKind::Number;
+    token.value = literal.value;
+  }
+  else
+  {
+    token.kind = TokenKind::Illegal;
+    token.error = LexError::BadNumber;
+  }
+  return token;
+}
+
+/// A name, lower-cased: a reserved word, a library function or an identifier; an over-long one
+/// is Illegal.
+Token Lexer::scan_word(Token token)
+{
+  std::string name;
+  while (is_alpha(peek()) || is_digit(peek()) || peek() == '_')
+  {
+    name.push_back(to_lower(peek()));
+    advance();
+  }
+  token.length = name.size();
+  token.text = name;
+  // The original's buffer holds 255 characters plus the terminator; 256 overflows it (undefined
+  // behaviour there), longer is rejected: refuse both.
+  if (name.size() >= kMaxLexemLength)
+  {
+    token.kind = TokenKind::Illegal;
+    token.error = LexError::LongIdentifier;
+    return token;
+  }
+  for (const ReservedWord& word : kReserved)
+  {
+    if (word.spelling == name)
+    {
+      token.kind = word.kind;
+      return token;
+    }
+  }
+  if (const std::optional<FunctionId> function = find_function(name))
+  {
+    token.kind = TokenKind::Function;
+    token.function = *function;
+    return token;
+  }
+  token.kind = TokenKind::Identifier;
+  return token;
+}
+
 Token Lexer::next_raw(bool& is_comment)
 {
   skip_whitespace();
@@ -275,120 +391,24 @@ Token Lexer::next_raw(bool& is_comment)
     case '>':
       return peek(1) == '=' ? simple(TokenKind::GreaterEqual, 2) : simple(TokenKind::Greater, 1);
     case '-':
-    {
       if (peek(1) != '-')
       {
         return simple(TokenKind::Minus, 1);
       }
-      advance(2);
-      std::size_t count = 0;
-      while (peek() != '\n' && peek() != '\0')
-      {
-        // With CR accepted, the CR of a CRLF line end is not part of the comment's length.
-        const bool line_end_cr =
-          peek() == '\r' && peek(1) == '\n' && options_.accept_carriage_return;
-        if (!line_end_cr && count >= kMaxLexemLength)
-        {
-          // The original stops reading after 256 characters and rejects the token; skip the
-          // rest of the line so the next token starts on the next line.
-          while (peek() != '\n' && peek() != '\0')
-          {
-            advance();
-          }
-          token.kind = TokenKind::Illegal;
-          token.error = LexError::LongComment;
-          token.length = pos_ - token.offset;
-          return token;
-        }
-        if (!line_end_cr)
-        {
-          ++count;
-        }
-        advance();
-      }
-      is_comment = true;
-      token.kind = TokenKind::End;
-      return token;
-    }
+      return scan_comment(std::move(token), is_comment);
     case '"':
-    {
-      advance();
-      std::string contents;
-      while (
-        peek() != '"' && peek() != '\0' && peek() != '\n' && contents.size() < kMaxLexemLength - 1)
-      {
-        contents.push_back(peek());
-        advance();
-      }
-      if (peek() != '"')
-      {
-        token.kind = TokenKind::Illegal;
-        token.error = LexError::UnterminatedString;
-        token.length = pos_ - token.offset;
-        return token;
-      }
-      advance();
-      token.kind = TokenKind::String;
-      token.text = std::move(contents);
-      token.length = pos_ - token.offset;
-      return token;
-    }
+      return scan_string(std::move(token));
     default:
       break;
   }
 
   if (is_digit(c) || c == '.')
   {
-    const NumberLiteral literal = scan_number_literal(text_, pos_);
-    advance(literal.length);
-    token.length = literal.length;
-    if (literal.ok)
-    {
-      token.kind = TokenKind::Number;
-      token.value = literal.value;
-    }
-    else
-    {
-      token.kind = TokenKind::Illegal;
-      token.error = LexError::BadNumber;
-    }
-    return token;
+    return scan_number(std::move(token));
   }
-
   if (is_alpha(c))
   {
-    std::string name;
-    while (is_alpha(peek()) || is_digit(peek()) || peek() == '_')
-    {
-      name.push_back(to_lower(peek()));
-      advance();
-    }
-    token.length = name.size();
-    token.text = name;
-    // The original's buffer holds 255 characters plus the terminator; 256 overflows it (undefined
-    // behaviour there), longer is rejected: refuse both.
-    if (name.size() >= kMaxLexemLength)
-    {
-      token.kind = TokenKind::Illegal;
-      token.error = LexError::LongIdentifier;
-      return token;
-    }
-    for (const ReservedWord& word : kReserved)
-    {
-      if (word.spelling == name)
-      {
-        token.kind = word.kind;
-        return token;
-      }
-    }
-    if (const std::optional<FunctionId> function = find_function(name))
-    {
-      token.kind = TokenKind::Function;
-      token.function = *function;
-      return token;
-    }
-    token.kind = TokenKind::Identifier;
-    return token;
+    return scan_word(std::move(token));
   }
 
   // Any other byte (including CR when not accepted, form feed, '#', '!', bytes >= 0x80).

@@ -36,6 +36,11 @@ private:
   void advance(std::size_t count = 1);
   void skip_whitespace();
   Token next_raw(bool& is_comment);
+  // The longer tokens of next_raw, each from its first character on (`token` has its position).
+  Token scan_comment(Token token, bool& is_comment);
+  Token scan_string(Token token);
+  Token scan_number(Token token);
+  Token scan_word(Token token);
 };
 
 /// Tokenizes the whole text; the last token is always End.

@@ -261,6 +261,124 @@ std::array<Interval, 3> probe_box(const GridFrame& frame, const std::array<std::
   return box;
 }
 
+/// What one pool participant of brick_normals keeps from brick to brick: the full tape's
+/// evaluators, the simplifier, and the runner, interval evaluator and kernel of the bricks' tapes.
+struct BrickParticipant
+{
+  std::shared_ptr<ThreadPool> caller_only = std::make_shared<ThreadPool>(1);
+  IntervalEvaluator interval;
+  std::vector<Choice> choices, brick_choices;
+  TapeSimplifier simplifier;
+  std::unique_ptr<BatchEvaluator> full;
+  // The bricks' simplified tapes: one runner, interval evaluator and kernel rebound per brick
+  // (a batch evaluator per brick checked its tape and compiled it into fresh memory each time).
+  std::unique_ptr<IntervalEvaluator> super_interval;
+  eval::BlockRunner runner;
+  eval::LazyKernel kernel;
+  std::shared_ptr<const Tape> kernel_tape;
+  std::array<std::vector<double>, 3> in;
+  std::vector<double> values;
+  bool jit = true;
+
+  /// F of the simplified `brick` tape at `n` points, on this thread.
+  void evaluate_brick(const std::shared_ptr<const Tape>& brick,
+    const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+  {
+    if (kernel_tape != brick)
+    {
+      kernel.reset();
+      kernel_tape = brick;
+    }
+    runner.bind(brick, true, jit ? kernel.get(*brick, n) : nullptr);
+    runner.evaluate(inputs, n, out, nullptr, {});
+  }
+
+  BrickParticipant(const std::shared_ptr<const Tape>& tape, bool jit_wanted)
+    : interval(tape)
+    , choices(tape->code.size())
+    , jit(jit_wanted)
+  {
+    full = std::make_unique<BatchEvaluator>(tape, options());
+  }
+  BatchOptions options() const
+  {
+    BatchOptions o;
+    o.pool = caller_only;
+    o.jit = jit;
+    return o;
+  }
+};
+
+/// A point needing a difference normal, by (super-brick, brick, point).
+struct BrickEntry
+{
+  std::uint64_t super, brick;
+  std::size_t point;
+  bool operator<(const BrickEntry& o) const
+  {
+    return super != o.super ? super < o.super : brick != o.brick ? brick < o.brick : point < o.point;
+  }
+};
+
+/// No super-brick or brick: a cell-centre point (no edge), evaluated on the full tape, last.
+constexpr std::uint64_t kNoBrick = std::numeric_limits<std::uint64_t>::max();
+
+/// The points of brick_normals in brick order: `order` sorted, `ids` its points, and the start
+/// of each super-brick's run in it (with order.size() at the end).
+struct BrickOrder
+{
+  std::vector<BrickEntry> order;
+  std::vector<std::size_t> ids;
+  std::vector<std::size_t> super_begin;
+};
+
+BrickOrder order_by_brick(const GridFrame& frame, const std::vector<std::uint64_t>& keys,
+  std::int64_t brick, std::int64_t super)
+{
+  BrickOrder out;
+  const auto linear = [&](const std::array<std::int64_t, 3>& v, std::int64_t size)
+  {
+    std::array<std::uint64_t, 3> n{};
+    for (int a = 0; a < 3; ++a)
+    {
+      n[a] = static_cast<std::uint64_t>((frame.samples[a] + size - 1) / size);
+    }
+    const auto c = [&](int a) { return static_cast<std::uint64_t>(v[a] / size); };
+    return (c(2) * n[1] + c(1)) * n[0] + c(0);
+  };
+  // (super-brick, brick, point) sorted; the cell-centre points (no edge) go last, full tape.
+  std::vector<BrickEntry>& order = out.order;
+  order.reserve(keys.size());
+  for (std::size_t p = 0; p < keys.size(); ++p)
+  {
+    if (!needs_difference_normal(keys[p]))
+    {
+      continue;
+    }
+    if (keys[p] == unshared_key)
+    {
+      order.push_back({ kNoBrick, kNoBrick, p });
+      continue;
+    }
+    const EdgeOfKey e = decode(keys[p], frame);
+    order.push_back({ linear(e.vertex, super), linear(e.vertex, brick), p });
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<std::size_t>& ids = out.ids;
+  std::vector<std::size_t>& super_begin = out.super_begin;
+  ids.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    ids[i] = order[i].point;
+    if (i == 0 || order[i].super != order[i - 1].super)
+    {
+      super_begin.push_back(i);
+    }
+  }
+  super_begin.push_back(order.size());
+  return out;
+}
+
 /// The same values brick by brick: the points on the grid edges that start in a brick of
 /// leaf_cells^3 vertices, with the tape simplified for the box that holds their probes, in two
 /// steps (a super-brick of 4^3 bricks from the full tape, then each brick from the super-brick's
@@ -273,101 +391,11 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
 {
   const std::int64_t brick = std::max(1, options.leaf_cells);
   const std::int64_t super = 4 * brick;
-  const auto linear = [&](const std::array<std::int64_t, 3>& v, std::int64_t size)
-  {
-    std::array<std::uint64_t, 3> n{};
-    for (int a = 0; a < 3; ++a)
-    {
-      n[a] = static_cast<std::uint64_t>((frame.samples[a] + size - 1) / size);
-    }
-    const auto c = [&](int a) { return static_cast<std::uint64_t>(v[a] / size); };
-    return (c(2) * n[1] + c(1)) * n[0] + c(0);
-  };
-  // (super-brick, brick, point) sorted; the cell-centre points (no edge) go last, full tape.
-  const std::uint64_t none = std::numeric_limits<std::uint64_t>::max();
-  struct Entry
-  {
-    std::uint64_t super, brick;
-    std::size_t point;
-    bool operator<(const Entry& o) const
-    {
-      return super != o.super ? super < o.super : brick != o.brick ? brick < o.brick : point < o.point;
-    }
-  };
-  std::vector<Entry> order;
-  order.reserve(keys.size());
-  for (std::size_t p = 0; p < keys.size(); ++p)
-  {
-    if (!needs_difference_normal(keys[p]))
-    {
-      continue;
-    }
-    if (keys[p] == unshared_key)
-    {
-      order.push_back({ none, none, p });
-      continue;
-    }
-    const EdgeOfKey e = decode(keys[p], frame);
-    order.push_back({ linear(e.vertex, super), linear(e.vertex, brick), p });
-  }
-  std::sort(order.begin(), order.end());
-  std::vector<std::size_t> ids(order.size());
-  std::vector<std::size_t> super_begin;
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    ids[i] = order[i].point;
-    if (i == 0 || order[i].super != order[i - 1].super)
-    {
-      super_begin.push_back(i);
-    }
-  }
-  super_begin.push_back(order.size());
+  const BrickOrder sorted = order_by_brick(frame, keys, brick, super);
+  const std::vector<BrickEntry>& order = sorted.order;
+  const std::vector<std::size_t>& ids = sorted.ids;
+  const std::vector<std::size_t>& super_begin = sorted.super_begin;
 
-  struct Participant
-  {
-    std::shared_ptr<ThreadPool> caller_only = std::make_shared<ThreadPool>(1);
-    IntervalEvaluator interval;
-    std::vector<Choice> choices, brick_choices;
-    TapeSimplifier simplifier;
-    std::unique_ptr<BatchEvaluator> full;
-    // The bricks' simplified tapes: one runner, interval evaluator and kernel rebound per brick
-    // (a batch evaluator per brick checked its tape and compiled it into fresh memory each time).
-    std::unique_ptr<IntervalEvaluator> super_interval;
-    eval::BlockRunner runner;
-    eval::LazyKernel kernel;
-    std::shared_ptr<const Tape> kernel_tape;
-    std::array<std::vector<double>, 3> in;
-    std::vector<double> values;
-    bool jit = true;
-
-    /// F of the simplified `brick` tape at `n` points, on this thread.
-    void evaluate_brick(const std::shared_ptr<const Tape>& brick,
-      const std::array<const double*, 3>& inputs, std::size_t n, double* out)
-    {
-      if (kernel_tape != brick)
-      {
-        kernel.reset();
-        kernel_tape = brick;
-      }
-      runner.bind(brick, true, jit ? kernel.get(*brick, n) : nullptr);
-      runner.evaluate(inputs, n, out, nullptr, {});
-    }
-
-    Participant(const std::shared_ptr<const Tape>& tape, bool jit_wanted)
-      : interval(tape)
-      , choices(tape->code.size())
-      , jit(jit_wanted)
-    {
-      full = std::make_unique<BatchEvaluator>(tape, options());
-    }
-    BatchOptions options() const
-    {
-      BatchOptions o;
-      o.pool = caller_only;
-      o.jit = jit;
-      return o;
-    }
-  };
   const auto corner = [&](std::size_t point, std::int64_t size)
   {
     std::array<std::int64_t, 3> v = decode(keys[point], frame).vertex;
@@ -377,18 +405,18 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     }
     return v;
   };
-  std::vector<std::unique_ptr<Participant>> participants(static_cast<std::size_t>(pool->size()));
+  std::vector<std::unique_ptr<BrickParticipant>> participants(static_cast<std::size_t>(pool->size()));
   pool->parallel_for(super_begin.size() - 1,
     [&](std::size_t g, int slot)
     {
       auto& mine = participants[static_cast<std::size_t>(slot)];
       if (!mine)
       {
-        mine = std::make_unique<Participant>(tape, options.jit);
+        mine = std::make_unique<BrickParticipant>(tape, options.jit);
       }
-      Participant& pt = *mine;
+      BrickParticipant& pt = *mine;
       const std::size_t begin = super_begin[g], end = super_begin[g + 1];
-      if (order[begin].super == none)
+      if (order[begin].super == kNoBrick)
       {
         probe_normals(
           [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)

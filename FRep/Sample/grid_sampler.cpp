@@ -100,6 +100,156 @@ struct GradientSlot
   std::vector<double> point;
 };
 
+/// A block's buffers, in structure of arrays as the batch evaluator reads and writes them.
+struct BlockBuffers
+{
+  std::vector<std::vector<double>> coordinates;
+  std::vector<const double*> inputs;
+  std::vector<double> values;
+  std::vector<std::uint32_t> errors;
+  std::vector<std::uint8_t> failed;
+  std::vector<std::vector<double>> attributes;
+  std::vector<double*> attribute_out;
+  std::vector<const double*> attribute_in;
+  std::vector<double> gradients;
+
+  BlockBuffers(std::size_t dimension, std::size_t block, std::size_t attribute_count,
+    bool with_gradients)
+    : coordinates(dimension, std::vector<double>(block))
+    , values(block)
+    , errors(block)
+    , failed(block)
+    , attributes(attribute_count, std::vector<double>(block))
+    , gradients(with_gradients ? block * dimension : 0)
+  {
+    for (const auto& column : coordinates)
+    {
+      inputs.push_back(column.data());
+    }
+    for (auto& column : attributes)
+    {
+      attribute_out.push_back(column.data());
+      attribute_in.push_back(column.data());
+    }
+  }
+  BlockBuffers(const BlockBuffers&) = delete;
+  BlockBuffers& operator=(const BlockBuffers&) = delete;
+};
+
+/// failed[p]: sample p raised an error or is NaN. (Through plain pointers: a byte store could
+/// otherwise change the buffers' own pointers, reloaded per sample.)
+void mark_failed(const std::uint32_t* errors, const double* values, std::size_t count,
+  std::uint8_t* failed)
+{
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    failed[p] = errors[p] != 0 || std::isnan(values[p]) ? 1 : 0;
+  }
+}
+
+/// The gradients of the block's first `count` samples that did not fail: pointwise evaluators,
+/// one per pool slot, over chunks of the block.
+void block_gradients(ThreadPool& pool, const std::shared_ptr<const Tape>& tape,
+  std::vector<GradientSlot>& slots, BlockBuffers& b, std::size_t count)
+{
+  const std::size_t dimension = b.coordinates.size();
+  const std::size_t tasks = (count + gradient_chunk - 1) / gradient_chunk;
+  pool.parallel_for(tasks,
+    [&](std::size_t task, int slot)
+    {
+      GradientSlot& s = slots[static_cast<std::size_t>(slot)];
+      if (!s.evaluator)
+      {
+        s.evaluator = std::make_unique<GradientEvaluator>(tape);
+        s.point.resize(dimension);
+      }
+      const std::size_t end = std::min(count, (task + 1) * gradient_chunk);
+      for (std::size_t p = task * gradient_chunk; p < end; ++p)
+      {
+        if (b.failed[p])
+        {
+          continue; // the policy fills it in
+        }
+        for (std::size_t k = 0; k < dimension; ++k)
+        {
+          s.point[k] = b.coordinates[k][p];
+        }
+        s.evaluator->evaluate(
+          s.point, std::span<double>(b.gradients.data() + p * dimension, dimension));
+      }
+    });
+}
+
+/// The last successful sample's values, for FailurePolicy::Previous (0 before the first).
+struct PreviousSample
+{
+  double value = 0.0;
+  std::vector<double> attributes;
+  std::vector<double> gradient;
+};
+
+/// Failed samples of the block [first, first + count), in order: counted (the first one's
+/// position and error kept in `result`), then NaN or the previous sample's values (the previous
+/// sample is final by then: it succeeded or was itself filled in before).
+void fill_failed(BlockBuffers& b, std::size_t first, std::size_t count, bool gradients,
+  FailurePolicy policy, PreviousSample& previous, SampleResult& result)
+{
+  const std::size_t dimension = b.coordinates.size();
+  const std::size_t attribute_count = b.attributes.size();
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    double* g = gradients ? b.gradients.data() + p * dimension : nullptr;
+    if (!b.failed[p])
+    {
+      previous.value = b.values[p];
+      for (std::size_t j = 0; j < attribute_count; ++j)
+      {
+        previous.attributes[j] = b.attributes[j][p];
+      }
+      if (g)
+      {
+        std::copy_n(g, dimension, previous.gradient.data());
+      }
+      continue;
+    }
+    if (result.failed++ == 0)
+    {
+      result.first_failed = static_cast<std::int64_t>(first + p);
+      result.first_error = b.errors[p];
+      for (std::size_t k = 0; k < dimension; ++k)
+      {
+        result.first_failed_at.push_back(b.coordinates[k][p]);
+      }
+    }
+    const bool hfp = policy == FailurePolicy::Previous;
+    b.values[p] = hfp ? previous.value : nan;
+    for (std::size_t j = 0; j < attribute_count; ++j)
+    {
+      b.attributes[j][p] = hfp ? previous.attributes[j] : nan;
+    }
+    for (std::size_t k = 0; g && k < dimension; ++k)
+    {
+      g[k] = hfp ? previous.gradient[k] : nan;
+    }
+  }
+}
+
+/// The tiled evaluator (tile by tile, tapes simplified per tile) when the tape has anything a
+/// box can decide or only the side of iso is asked for; else null (the batch evaluator).
+std::unique_ptr<sample::TiledEvaluator> make_tiled(const std::shared_ptr<const Tape>& tape,
+  const std::shared_ptr<ThreadPool>& pool, const SampleOptions& options)
+{
+  if (!options.sign_only && !(options.simplify && may_simplify(*tape)))
+  {
+    return nullptr;
+  }
+  sample::TileOptions tiles;
+  tiles.sign_only = options.sign_only;
+  tiles.iso = options.iso;
+  tiles.jit = options.jit;
+  return std::make_unique<sample::TiledEvaluator>(tape, pool, tiles);
+}
+
 } // namespace
 
 std::size_t grid_part_size(const GridSpec& grid)
@@ -202,45 +352,16 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     batch_options.jit = options.jit;
     BatchEvaluator batch(tape, batch_options);
     result.threads = batch.threads();
-    // Tile by tile with tapes simplified per tile, when the tape has anything a box can decide.
-    std::unique_ptr<sample::TiledEvaluator> tiled;
-    if (options.sign_only || (options.simplify && may_simplify(*tape)))
-    {
-      sample::TileOptions tiles;
-      tiles.sign_only = options.sign_only;
-      tiles.iso = options.iso;
-      tiles.jit = options.jit;
-      tiled = std::make_unique<sample::TiledEvaluator>(tape, pool, tiles);
-    }
+    const std::unique_ptr<sample::TiledEvaluator> tiled = make_tiled(tape, pool, options);
     std::vector<sample::SampleRun> runs;
 
-    // Block buffers (structure of arrays, as the batch evaluator reads and writes them).
     const std::size_t total = grid_part_size(grid);
     const std::size_t block = std::min(total, block_samples);
-    std::vector<std::vector<double>> coordinates(dimension, std::vector<double>(block));
-    std::vector<const double*> inputs;
-    for (const auto& column : coordinates)
-    {
-      inputs.push_back(column.data());
-    }
-    std::vector<double> values(block);
-    std::vector<std::uint32_t> errors(block);
-    std::vector<std::uint8_t> failed(block);
-    std::vector<std::vector<double>> attributes(attribute_count, std::vector<double>(block));
-    std::vector<double*> attribute_out;
-    std::vector<const double*> attribute_in;
-    for (auto& column : attributes)
-    {
-      attribute_out.push_back(column.data());
-      attribute_in.push_back(column.data());
-    }
-    std::vector<double> gradients(options.gradients ? block * dimension : 0);
+    BlockBuffers b(dimension, block, attribute_count, options.gradients);
     std::vector<GradientSlot> slots(options.gradients ? static_cast<std::size_t>(pool->size()) : 0);
-
-    // The last successful sample's values, for FailurePolicy::Previous (0 before the first).
-    double previous_value = 0.0;
-    std::vector<double> previous_attributes(attribute_count, 0.0);
-    std::vector<double> previous_gradient(options.gradients ? dimension : 0, 0.0);
+    PreviousSample previous;
+    previous.attributes.assign(attribute_count, 0.0);
+    previous.gradient.assign(options.gradients ? dimension : 0, 0.0);
 
     const auto stop = [&](double fraction)
     {
@@ -256,100 +377,33 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     for (std::size_t first = 0; first < total;)
     {
       const std::size_t count = std::min(block, total - first);
-      cursor.fill(coordinates, count, runs);
+      cursor.fill(b.coordinates, count, runs);
       if (tiled)
       {
-        result.errors += tiled->evaluate(std::span<const double* const>(inputs), runs, count,
-          values.data(), errors.data(), std::span<double* const>(attribute_out));
+        result.errors += tiled->evaluate(std::span<const double* const>(b.inputs), runs, count,
+          b.values.data(), b.errors.data(), std::span<double* const>(b.attribute_out));
       }
       else
       {
-        result.errors += batch.evaluate(std::span<const double* const>(inputs), count,
-          values.data(), errors.data(), std::span<double* const>(attribute_out));
+        result.errors += batch.evaluate(std::span<const double* const>(b.inputs), count,
+          b.values.data(), b.errors.data(), std::span<double* const>(b.attribute_out));
         result.instructions += count * tape->code.size();
       }
-      for (std::size_t p = 0; p < count; ++p)
-      {
-        failed[p] = errors[p] != 0 || std::isnan(values[p]) ? 1 : 0;
-      }
-
-      // Gradients: pointwise evaluators, one per pool slot, over chunks of the block.
+      mark_failed(b.errors.data(), b.values.data(), count, b.failed.data());
       if (options.gradients)
       {
-        const std::size_t tasks = (count + gradient_chunk - 1) / gradient_chunk;
-        pool->parallel_for(tasks,
-          [&](std::size_t task, int slot)
-          {
-            GradientSlot& s = slots[static_cast<std::size_t>(slot)];
-            if (!s.evaluator)
-            {
-              s.evaluator = std::make_unique<GradientEvaluator>(tape);
-              s.point.resize(dimension);
-            }
-            const std::size_t end = std::min(count, (task + 1) * gradient_chunk);
-            for (std::size_t p = task * gradient_chunk; p < end; ++p)
-            {
-              if (failed[p])
-              {
-                continue; // the policy fills it in below
-              }
-              for (std::size_t k = 0; k < dimension; ++k)
-              {
-                s.point[k] = coordinates[k][p];
-              }
-              s.evaluator->evaluate(
-                s.point, std::span<double>(gradients.data() + p * dimension, dimension));
-            }
-          });
+        block_gradients(*pool, tape, slots, b, count);
       }
-
-      // Failed samples, in order: counted, then NaN or the previous sample's values (the
-      // previous sample is final by then: it succeeded or was itself filled in before).
-      for (std::size_t p = 0; p < count; ++p)
-      {
-        double* g = options.gradients ? gradients.data() + p * dimension : nullptr;
-        if (!failed[p])
-        {
-          previous_value = values[p];
-          for (std::size_t j = 0; j < attribute_count; ++j)
-          {
-            previous_attributes[j] = attributes[j][p];
-          }
-          if (g)
-          {
-            std::copy_n(g, dimension, previous_gradient.data());
-          }
-          continue;
-        }
-        if (result.failed++ == 0)
-        {
-          result.first_failed = static_cast<std::int64_t>(first + p);
-          result.first_error = errors[p];
-          for (std::size_t k = 0; k < dimension; ++k)
-          {
-            result.first_failed_at.push_back(coordinates[k][p]);
-          }
-        }
-        const bool hfp = policy == FailurePolicy::Previous;
-        values[p] = hfp ? previous_value : nan;
-        for (std::size_t j = 0; j < attribute_count; ++j)
-        {
-          attributes[j][p] = hfp ? previous_attributes[j] : nan;
-        }
-        for (std::size_t k = 0; g && k < dimension; ++k)
-        {
-          g[k] = hfp ? previous_gradient[k] : nan;
-        }
-      }
+      fill_failed(b, first, count, options.gradients, policy, previous, result);
 
       SampleBlock out;
       out.first = first;
       out.count = count;
-      out.coordinates = inputs;
-      out.values = values.data();
-      out.attributes = attribute_in;
-      out.gradients = options.gradients ? gradients.data() : nullptr;
-      out.failed = failed.data();
+      out.coordinates = b.inputs;
+      out.values = b.values.data();
+      out.attributes = b.attribute_in;
+      out.gradients = options.gradients ? b.gradients.data() : nullptr;
+      out.failed = b.failed.data();
       if (sink)
       {
         sink(out);

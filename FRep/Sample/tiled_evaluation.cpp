@@ -218,6 +218,19 @@ std::vector<Rectangle> children(const Rectangle& r, std::size_t tile)
   return out;
 }
 
+/// The rectangle of every run: all rows, the columns from the least to the greatest.
+Rectangle bounding_rectangle(std::span<const SampleRun> runs)
+{
+  std::int64_t column_lo = std::numeric_limits<std::int64_t>::max();
+  std::int64_t column_hi = std::numeric_limits<std::int64_t>::min();
+  for (const SampleRun& run : runs)
+  {
+    column_lo = std::min(column_lo, run.column);
+    column_hi = std::max(column_hi, run.column + static_cast<std::int64_t>(run.count));
+  }
+  return { 0, runs.size(), column_lo, column_hi };
+}
+
 } // namespace
 
 /// A rectangle to evaluate on the pool, with the tape simplified for it so far.
@@ -225,6 +238,164 @@ struct TiledEvaluator::Task
 {
   Rectangle rectangle;
   std::shared_ptr<const Tape> tape;
+};
+
+/// The quadtree of one task: boxes evaluated on intervals, decided ones filled (sign_only),
+/// the tape simplified per box, the leaves (tiles) evaluated by the worker's batch runner.
+struct TiledEvaluator::Walk
+{
+  std::span<const SampleRun> runs;
+  std::span<const double* const> coordinates;
+  std::size_t leaf_samples;
+  std::size_t tile;
+  double* values;
+  std::uint32_t* errors;
+  std::span<double* const> attributes;
+  Worker& w;
+  std::vector<Task>* tasks; // set in the serial phase: collect rectangles of <= task_samples
+  std::size_t task_samples;
+  bool sign_only;
+  double iso;
+  bool jit;
+  const Tape* original; // the evaluator's own tape (checked); the others are simplified ones
+
+  /// With sign_only, fills the rectangle with the bound when the box's enclosure decides it.
+  bool decided(const Rectangle& r, const IntervalResult& enclosure)
+  {
+    double bound = 0.0;
+    if (!sign_only || !decides_side(enclosure, iso, bound))
+    {
+      return false;
+    }
+    for_each_segment(runs, r,
+      [&](std::size_t first, std::size_t n)
+      {
+        fill_side(values, errors, first, n, bound);
+        w.decided += n;
+      });
+    return true;
+  }
+
+  /// The rectangle's box from the ends of its segments (positions rise along axis 0 and are
+  /// constant along a run in the others: SampleRun's contract), and its sample count.
+  std::vector<Interval> box_of(const Rectangle& r, std::size_t& samples) const
+  {
+    std::vector<Interval> b = empty_box(coordinates.size());
+    samples = 0;
+    for_each_segment(runs, r,
+      [&](std::size_t first, std::size_t n)
+      {
+        b[0].lo = std::min(b[0].lo, coordinates[0][first]);
+        b[0].hi = std::max(b[0].hi, coordinates[0][first + n - 1]);
+        for (std::size_t k = 1; k < b.size(); ++k)
+        {
+          b[k].lo = std::min(b[k].lo, coordinates[k][first]);
+          b[k].hi = std::max(b[k].hi, coordinates[k][first]);
+        }
+        samples += n;
+      });
+    return b;
+  }
+
+  void leaf(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
+    std::size_t depth)
+  {
+    w.index.clear();
+    for_each_segment(runs, r,
+      [&](std::size_t first, std::size_t n)
+      {
+        for (std::size_t q = 0; q < n; ++q)
+        {
+          w.index.push_back(first + q);
+        }
+      });
+    const std::size_t n = w.index.size();
+    std::vector<Interval> b = empty_box(coordinates.size());
+    for (std::size_t k = 0; k < coordinates.size(); ++k)
+    {
+      double* column = w.in[k].data();
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        column[i] = coordinates[k][w.index[i]];
+      }
+      const auto [lo, hi] = std::minmax_element(column, column + n);
+      b[k] = { *lo, *hi };
+    }
+    std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
+    if (decided(r, iv.evaluate(b, choices)))
+    {
+      return;
+    }
+    const std::shared_ptr<const Tape> leaf_tape = better(w.simplifier.simplify(*tape, choices), tape);
+    if (w.kernel_tape != leaf_tape)
+    {
+      w.kernel.reset();
+      w.kernel_tape = leaf_tape;
+    }
+    w.runner.bind(leaf_tape, leaf_tape.get() != original,
+      jit ? w.kernel.get(*leaf_tape, n) : nullptr);
+    w.failures += w.runner.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
+      std::span<double* const>(w.attribute_rows));
+    w.instructions += n * leaf_tape->code.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t p = w.index[i];
+      values[p] = w.values[i];
+      if (errors)
+      {
+        errors[p] = w.errors[i];
+      }
+      for (std::size_t j = 0; j < attributes.size(); ++j)
+      {
+        if (attributes[j])
+        {
+          attributes[j][p] = w.attributes[j][i];
+        }
+      }
+    }
+  }
+
+  void node(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
+    std::size_t depth)
+  {
+    std::size_t samples = 0;
+    const std::vector<Interval> b = box_of(r, samples);
+    if (samples == 0)
+    {
+      return;
+    }
+    if (samples <= leaf_samples)
+    {
+      leaf(r, tape, iv, depth);
+      return;
+    }
+    std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
+    if (decided(r, iv.evaluate(b, choices)))
+    {
+      return;
+    }
+    std::shared_ptr<const Tape> below = better(w.simplifier.simplify(*tape, choices), tape);
+    IntervalEvaluator* below_iv =
+      below == tape ? &iv : &w.interval_at(depth + 1, below, below.get() != original);
+    for (const Rectangle& child : children(r, tile))
+    {
+      if (tasks && samples_in(child) <= task_samples)
+      {
+        tasks->push_back({ child, below });
+      }
+      else
+      {
+        node(child, below, *below_iv, depth + 1);
+      }
+    }
+  }
+
+  std::size_t samples_in(const Rectangle& r) const
+  {
+    std::size_t n = 0;
+    for_each_segment(runs, r, [&](std::size_t, std::size_t count) { n += count; });
+    return n;
+  }
 };
 
 TiledEvaluator::TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool,
@@ -285,185 +456,13 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
   // The block is cut serially (simplifying as it goes) into tasks of at most (4 tile)^2 samples;
   // the tasks run on the pool, each a quadtree down to tiles of tile^2 samples.
   const std::size_t tile = static_cast<std::size_t>(tile_);
-  std::int64_t column_lo = std::numeric_limits<std::int64_t>::max();
-  std::int64_t column_hi = std::numeric_limits<std::int64_t>::min();
-  for (const SampleRun& run : runs)
-  {
-    column_lo = std::min(column_lo, run.column);
-    column_hi = std::max(column_hi, run.column + static_cast<std::int64_t>(run.count));
-  }
-  for (auto& w : workers_)
-  {
-    if (w)
-    {
-      w->failures = 0;
-      w->instructions = 0;
-      w->decided = 0;
-    }
-  }
+  reset_counters();
   const std::size_t leaf_samples = tile * tile;
-
-  // The quadtree of one task.
-  struct Walk
-  {
-    std::span<const SampleRun> runs;
-    std::span<const double* const> coordinates;
-    std::size_t leaf_samples;
-    std::size_t tile;
-    double* values;
-    std::uint32_t* errors;
-    std::span<double* const> attributes;
-    Worker& w;
-    std::vector<Task>* tasks; // set in the serial phase: collect rectangles of <= task_samples
-    std::size_t task_samples;
-    bool sign_only;
-    double iso;
-    bool jit;
-    const Tape* original; // the evaluator's own tape (checked); the others are simplified ones
-
-    /// With sign_only, fills the rectangle with the bound when the box's enclosure decides it.
-    bool decided(const Rectangle& r, const IntervalResult& enclosure)
-    {
-      double bound = 0.0;
-      if (!sign_only || !decides_side(enclosure, iso, bound))
-      {
-        return false;
-      }
-      for_each_segment(runs, r,
-        [&](std::size_t first, std::size_t n)
-        {
-          fill_side(values, errors, first, n, bound);
-          w.decided += n;
-        });
-      return true;
-    }
-
-    /// The rectangle's box from the ends of its segments (positions rise along axis 0 and are
-    /// constant along a run in the others: SampleRun's contract), and its sample count.
-    std::vector<Interval> box_of(const Rectangle& r, std::size_t& samples) const
-    {
-      std::vector<Interval> b = empty_box(coordinates.size());
-      samples = 0;
-      for_each_segment(runs, r,
-        [&](std::size_t first, std::size_t n)
-        {
-          b[0].lo = std::min(b[0].lo, coordinates[0][first]);
-          b[0].hi = std::max(b[0].hi, coordinates[0][first + n - 1]);
-          for (std::size_t k = 1; k < b.size(); ++k)
-          {
-            b[k].lo = std::min(b[k].lo, coordinates[k][first]);
-            b[k].hi = std::max(b[k].hi, coordinates[k][first]);
-          }
-          samples += n;
-        });
-      return b;
-    }
-
-    void leaf(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
-      std::size_t depth)
-    {
-      w.index.clear();
-      for_each_segment(runs, r,
-        [&](std::size_t first, std::size_t n)
-        {
-          for (std::size_t q = 0; q < n; ++q)
-          {
-            w.index.push_back(first + q);
-          }
-        });
-      const std::size_t n = w.index.size();
-      std::vector<Interval> b = empty_box(coordinates.size());
-      for (std::size_t k = 0; k < coordinates.size(); ++k)
-      {
-        double* column = w.in[k].data();
-        for (std::size_t i = 0; i < n; ++i)
-        {
-          column[i] = coordinates[k][w.index[i]];
-        }
-        const auto [lo, hi] = std::minmax_element(column, column + n);
-        b[k] = { *lo, *hi };
-      }
-      std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-      if (decided(r, iv.evaluate(b, choices)))
-      {
-        return;
-      }
-      const std::shared_ptr<const Tape> leaf_tape = better(w.simplifier.simplify(*tape, choices), tape);
-      if (w.kernel_tape != leaf_tape)
-      {
-        w.kernel.reset();
-        w.kernel_tape = leaf_tape;
-      }
-      w.runner.bind(leaf_tape, leaf_tape.get() != original,
-        jit ? w.kernel.get(*leaf_tape, n) : nullptr);
-      w.failures += w.runner.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
-        std::span<double* const>(w.attribute_rows));
-      w.instructions += n * leaf_tape->code.size();
-      for (std::size_t i = 0; i < n; ++i)
-      {
-        const std::size_t p = w.index[i];
-        values[p] = w.values[i];
-        if (errors)
-        {
-          errors[p] = w.errors[i];
-        }
-        for (std::size_t j = 0; j < attributes.size(); ++j)
-        {
-          if (attributes[j])
-          {
-            attributes[j][p] = w.attributes[j][i];
-          }
-        }
-      }
-    }
-
-    void node(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
-      std::size_t depth)
-    {
-      std::size_t samples = 0;
-      const std::vector<Interval> b = box_of(r, samples);
-      if (samples == 0)
-      {
-        return;
-      }
-      if (samples <= leaf_samples)
-      {
-        leaf(r, tape, iv, depth);
-        return;
-      }
-      std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-      if (decided(r, iv.evaluate(b, choices)))
-      {
-        return;
-      }
-      std::shared_ptr<const Tape> below = better(w.simplifier.simplify(*tape, choices), tape);
-      IntervalEvaluator* below_iv =
-        below == tape ? &iv : &w.interval_at(depth + 1, below, below.get() != original);
-      for (const Rectangle& child : children(r, tile))
-      {
-        if (tasks && samples_in(child) <= task_samples)
-        {
-          tasks->push_back({ child, below });
-        }
-        else
-        {
-          node(child, below, *below_iv, depth + 1);
-        }
-      }
-    }
-
-    std::size_t samples_in(const Rectangle& r) const
-    {
-      std::size_t n = 0;
-      for_each_segment(runs, r, [&](std::size_t, std::size_t count) { n += count; });
-      return n;
-    }
-  };
 
   // Serially on the caller: the block down to tasks (the caller's scratch is top_).
   std::vector<Task> tasks;
   const std::size_t task_samples = 16 * tile * tile;
-  const Rectangle whole{ 0, runs.size(), column_lo, column_hi };
+  const Rectangle whole = bounding_rectangle(runs);
   {
     Walk top{ runs, coordinates, leaf_samples, tile, values, errors, attributes, *top_, &tasks,
       task_samples, sign_only_, iso_, jit_, tape_.get() };
@@ -495,6 +494,24 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
         sign_only_, iso_, jit_, tape_.get() };
       walk.node(tasks[t].rectangle, tasks[t].tape, task_interval, 0);
     });
+  return gather_counters();
+}
+
+void TiledEvaluator::reset_counters()
+{
+  for (auto& w : workers_)
+  {
+    if (w)
+    {
+      w->failures = 0;
+      w->instructions = 0;
+      w->decided = 0;
+    }
+  }
+}
+
+std::size_t TiledEvaluator::gather_counters()
+{
   std::size_t failures = top_->failures;
   instructions_ += top_->instructions;
   decided_ += top_->decided;

@@ -72,6 +72,10 @@ public:
 private:
   struct Worker;
   struct Task;
+  struct Walk;
+
+  void reset_counters();          // the workers' failures, instructions and decided samples
+  std::size_t gather_counters();  // into the totals; returns the failures of this evaluate
 
   std::shared_ptr<const Tape> tape_;
   std::shared_ptr<ThreadPool> pool_;

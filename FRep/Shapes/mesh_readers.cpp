@@ -244,6 +244,118 @@ MeshReadResult read_obj(std::string_view text)
   return r;
 }
 
+namespace
+{
+
+/// A PLY element's property: a number, or a list of numbers (count_type non-empty).
+struct PlyProperty
+{
+  std::string name;
+  std::string type;
+  std::string count_type; ///< non-empty for a list
+};
+/// A PLY element: its name, count and properties, from the header.
+struct PlyElement
+{
+  std::string name;
+  std::size_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+/// Bytes of a PLY number type; 0 for an unknown one.
+int ply_size_of(const std::string& t)
+{
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+/// The elements and the format named by a PLY header (the text before end_header); the error,
+/// or "".
+std::string read_ply_header(std::string_view header_text, std::vector<PlyElement>& elements,
+  std::string& format)
+{
+  std::istringstream header{ std::string(header_text) };
+  std::string line;
+  while (std::getline(header, line))
+  {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "format")
+    {
+      words >> format;
+    }
+    else if (key == "element")
+    {
+      PlyElement e;
+      long long count = -1;
+      words >> e.name >> count;
+      if (count < 0 || count > 1'000'000'000)
+      {
+        return "PLY: a bad element count";
+      }
+      e.count = static_cast<std::size_t>(count);
+      elements.push_back(e);
+    }
+    else if (key == "property")
+    {
+      if (elements.empty())
+      {
+        return "PLY: a property before any element";
+      }
+      PlyProperty p;
+      words >> p.type;
+      if (p.type == "list")
+      {
+        words >> p.count_type >> p.type;
+      }
+      words >> p.name;
+      elements.back().properties.push_back(p);
+    }
+  }
+  return {};
+}
+
+/// Reads the numbers of a PLY body one at a time, ASCII or binary, from `pos` on.
+struct PlyNumbers
+{
+  std::string_view bytes;
+  std::size_t pos;
+  bool ascii;
+  bool big;
+
+  /// One number of type t; false at the end of the data or on a bad (or non-finite) number.
+  bool read(const std::string& t, double& v)
+  {
+    if (ascii)
+    {
+      std::string_view w;
+      return next_word(bytes, pos, w) && to_double(w, v);
+    }
+    const int n = ply_size_of(t);
+    if (n == 0 || pos + static_cast<std::size_t>(n) > bytes.size())
+    {
+      return false;
+    }
+    const char* p = bytes.data() + pos;
+    pos += static_cast<std::size_t>(n);
+    if (t == "char" || t == "int8") v = load<std::int8_t>(p, big);
+    else if (t == "uchar" || t == "uint8") v = load<std::uint8_t>(p, big);
+    else if (t == "short" || t == "int16") v = load<std::int16_t>(p, big);
+    else if (t == "ushort" || t == "uint16") v = load<std::uint16_t>(p, big);
+    else if (t == "int" || t == "int32") v = load<std::int32_t>(p, big);
+    else if (t == "uint" || t == "uint32") v = load<std::uint32_t>(p, big);
+    else if (t == "float" || t == "float32") v = load<float>(p, big);
+    else v = load<double>(p, big);
+    return std::isfinite(v);
+  }
+};
+
+} // namespace
+
 MeshReadResult read_ply(std::string_view bytes)
 {
   if (bytes.substr(0, 4) != "ply\n" && bytes.substr(0, 5) != "ply\r\n")
@@ -261,58 +373,12 @@ MeshReadResult read_ply(std::string_view bytes)
     return failure("PLY: nothing after end_header");
   }
   ++body;
-  struct Property
-  {
-    std::string name;
-    std::string type;
-    std::string count_type; ///< non-empty for a list
-  };
-  struct Element
-  {
-    std::string name;
-    std::size_t count = 0;
-    std::vector<Property> properties;
-  };
-  std::vector<Element> elements;
+  std::vector<PlyElement> elements;
   std::string format;
-  std::istringstream header(std::string(bytes.substr(0, header_end)));
-  std::string line;
-  while (std::getline(header, line))
+  if (std::string error = read_ply_header(bytes.substr(0, header_end), elements, format);
+      !error.empty())
   {
-    std::istringstream words(line);
-    std::string key;
-    words >> key;
-    if (key == "format")
-    {
-      words >> format;
-    }
-    else if (key == "element")
-    {
-      Element e;
-      long long count = -1;
-      words >> e.name >> count;
-      if (count < 0 || count > 1'000'000'000)
-      {
-        return failure("PLY: a bad element count");
-      }
-      e.count = static_cast<std::size_t>(count);
-      elements.push_back(e);
-    }
-    else if (key == "property")
-    {
-      if (elements.empty())
-      {
-        return failure("PLY: a property before any element");
-      }
-      Property p;
-      words >> p.type;
-      if (p.type == "list")
-      {
-        words >> p.count_type >> p.type;
-      }
-      words >> p.name;
-      elements.back().properties.push_back(p);
-    }
+    return failure(error);
   }
   const bool ascii = format == "ascii";
   const bool big = format == "binary_big_endian";
@@ -320,46 +386,13 @@ MeshReadResult read_ply(std::string_view bytes)
   {
     return failure("PLY: unknown format '" + format + "'");
   }
-  const auto size_of = [](const std::string& t) -> int
-  {
-    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
-    if (t == "double" || t == "float64") return 8;
-    return 0;
-  };
-  std::size_t pos = body;
-  // Reads one number of type t, ASCII or binary.
-  const auto read_number = [&](const std::string& t, double& v) -> bool
-  {
-    if (ascii)
-    {
-      std::string_view w;
-      return next_word(bytes, pos, w) && to_double(w, v);
-    }
-    const int n = size_of(t);
-    if (n == 0 || pos + static_cast<std::size_t>(n) > bytes.size())
-    {
-      return false;
-    }
-    const char* p = bytes.data() + pos;
-    pos += static_cast<std::size_t>(n);
-    if (t == "char" || t == "int8") v = load<std::int8_t>(p, big);
-    else if (t == "uchar" || t == "uint8") v = load<std::uint8_t>(p, big);
-    else if (t == "short" || t == "int16") v = load<std::int16_t>(p, big);
-    else if (t == "ushort" || t == "uint16") v = load<std::uint16_t>(p, big);
-    else if (t == "int" || t == "int32") v = load<std::int32_t>(p, big);
-    else if (t == "uint" || t == "uint32") v = load<std::uint32_t>(p, big);
-    else if (t == "float" || t == "float32") v = load<float>(p, big);
-    else v = load<double>(p, big);
-    return std::isfinite(v);
-  };
+  PlyNumbers numbers{ bytes, body, ascii, big };
   MeshReadResult r;
-  for (const Element& e : elements)
+  for (const PlyElement& e : elements)
   {
-    for (const Property& p : e.properties)
+    for (const PlyProperty& p : e.properties)
     {
-      if (size_of(p.type) == 0 || (!p.count_type.empty() && size_of(p.count_type) == 0))
+      if (ply_size_of(p.type) == 0 || (!p.count_type.empty() && ply_size_of(p.count_type) == 0))
       {
         return failure("PLY: unknown property type in element " + e.name);
       }
@@ -367,12 +400,12 @@ MeshReadResult read_ply(std::string_view bytes)
     for (std::size_t i = 0; i < e.count; ++i)
     {
       std::array<double, 3> xyz{};
-      for (const Property& p : e.properties)
+      for (const PlyProperty& p : e.properties)
       {
         if (p.count_type.empty())
         {
           double v = 0;
-          if (!read_number(p.type, v))
+          if (!numbers.read(p.type, v))
           {
             return failure("PLY: the data ends early or has a bad number (element " + e.name + ")");
           }
@@ -383,7 +416,7 @@ MeshReadResult read_ply(std::string_view bytes)
           continue;
         }
         double count = 0;
-        if (!read_number(p.count_type, count) || count < 0 || count > 1000)
+        if (!numbers.read(p.count_type, count) || count < 0 || count > 1000)
         {
           return failure("PLY: a bad list size in element " + e.name);
         }
@@ -391,7 +424,7 @@ MeshReadResult read_ply(std::string_view bytes)
         for (int k = 0; k < static_cast<int>(count); ++k)
         {
           double v = 0;
-          if (!read_number(p.type, v) || v < 0 || v > 4294967295.0)
+          if (!numbers.read(p.type, v) || v < 0 || v > 4294967295.0)
           {
             return failure("PLY: a bad index in element " + e.name);
           }

@@ -303,6 +303,232 @@ std::vector<std::uint32_t> edge_pixels(const render::Image& image,
   return edges;
 }
 
+/// One picture's passes over the pool: the workers (one per participant, made on first use),
+/// cancellation, progress, and the picture of the first pass (refined at edges by the second).
+class Frame
+{
+public:
+  Frame(const Context& c, const render::Image& target, const detail::ViewRays& pixels,
+    const detail::ViewRays& samples, const std::array<Interval, 3>& clip,
+    const detail::TraceOptions& options, ThreadPool& pool, int ss,
+    const std::function<bool()>& cancel, const std::function<void(double)>& progress)
+    : c_(c)
+    , target_(target)
+    , pixels_(pixels)
+    , samples_(samples)
+    , clip_(clip)
+    , options_(options)
+    , pool_(pool)
+    , ss_(ss)
+    , cancel_(cancel)
+    , progress_(progress)
+    , tiles_x_((target.width + kTile - 1) / kTile)
+    , tiles_y_((target.height + kTile - 1) / kTile)
+    , workers_(static_cast<std::size_t>(pool.size()))
+    , first_(target.width, target.height)
+    , first_depth_(static_cast<std::size_t>(target.width) * target.height,
+        std::numeric_limits<float>::infinity())
+    , seen_(static_cast<std::size_t>(target.width) * target.height, Seen::Nothing)
+  {
+  }
+
+  /// 1. One ray per pixel, tile by tile.
+  void trace_pixels()
+  {
+    const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
+    pool_.parallel_for(tiles,
+      [&](std::size_t t, int slot)
+      {
+        if (stop())
+        {
+          return;
+        }
+        pixel_tile(t, worker(slot));
+        report(0.0, ss_ > 1 ? 0.7 : 1.0, tiles);
+      });
+  }
+
+  /// 2. Edges: supersample x supersample rays per pixel, averaged like render::downsample.
+  /// Returns the number of edge pixels.
+  std::size_t supersample_edges()
+  {
+    const std::vector<std::uint32_t> edges = edge_pixels(first_, seen_, first_depth_, pixels_);
+    // By tile, so that a tile's edge pixels share its pieces: only their rays are traced.
+    std::vector<std::vector<std::uint32_t>> by_tile(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+    for (const std::uint32_t e : edges)
+    {
+      const int x = static_cast<int>(e % target_.width), y = static_cast<int>(e / target_.width);
+      by_tile[static_cast<std::size_t>(y / kTile) * tiles_x_ + x / kTile].push_back(e);
+    }
+    std::size_t edge_tiles = 0;
+    for (const auto& tile : by_tile)
+    {
+      edge_tiles += tile.empty() ? 0 : 1;
+    }
+    finished_ = 0;
+    pool_.parallel_for(by_tile.size(),
+      [&](std::size_t t, int slot)
+      {
+        if (by_tile[t].empty() || stop())
+        {
+          return;
+        }
+        edge_tile(t, by_tile[t], worker(slot));
+        report(0.7, 0.3, edge_tiles);
+      });
+    return edges.size();
+  }
+
+  /// The tracers' counters of every worker, added to `s`.
+  void add_statistics(Statistics& s) const
+  {
+    for (const auto& w : workers_)
+    {
+      if (w)
+      {
+        for (const detail::PieceTracer* t : { &w->tracer, &w->fine })
+        {
+          const Statistics& ts = t->statistics();
+          s.rays += ts.rays;
+          s.rays_in_box += ts.rays_in_box;
+          s.hits += ts.hits;
+          s.interval_evaluations += ts.interval_evaluations;
+          s.point_evaluations += ts.point_evaluations;
+        }
+      }
+    }
+  }
+
+  bool cancelled() const { return cancelled_; }
+  double reported() const { return reported_; }
+  render::Image& picture() { return first_; }
+  std::vector<float>& depth() { return first_depth_; }
+
+private:
+  Worker& worker(int slot)
+  {
+    auto& w = workers_[static_cast<std::size_t>(slot)];
+    if (!w)
+    {
+      w = std::make_unique<Worker>(c_.shape, clip_, pixels_, samples_, options_);
+    }
+    return *w;
+  }
+
+  bool stop()
+  {
+    if (cancelled_.load(std::memory_order_relaxed) || (cancel_ && cancel_()))
+    {
+      cancelled_ = true;
+    }
+    return cancelled_.load(std::memory_order_relaxed);
+  }
+
+  // Progress: tiles finished per pass, reported only on the calling thread (a participant of
+  // the pool), so the callback needs no locking; the pixel pass is the first 70 %.
+  void report(double from, double span, std::size_t total)
+  {
+    const std::size_t done = finished_.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (progress_ && std::this_thread::get_id() == caller_ && total > 0)
+    {
+      const double fraction = from + span * static_cast<double>(done) / static_cast<double>(total);
+      if (fraction >= reported_ + 0.01) // at most about 100 calls
+      {
+        reported_ = fraction;
+        progress_(fraction);
+      }
+    }
+  }
+
+  void pixel_tile(std::size_t t, Worker& w)
+  {
+    const int x0 = static_cast<int>(t % tiles_x_) * kTile, y0 = static_cast<int>(t / tiles_x_) * kTile;
+    const int x1 = std::min(target_.width, x0 + kTile), y1 = std::min(target_.height, y0 + kTile);
+    w.hits.resize(static_cast<std::size_t>(x1 - x0) * (y1 - y0));
+    w.tracer.trace_tile(x0, y0, x1, y1, w.hits);
+    for (int y = y0; y < y1; ++y)
+    {
+      for (int x = x0; x < x1; ++x)
+      {
+        const std::size_t i = static_cast<std::size_t>(y) * target_.width + x;
+        const detail::Hit& hit = w.hits[static_cast<std::size_t>(y - y0) * (x1 - x0) + (x - x0)];
+        seen_[i] = shade_sample(c_, pixels_, w, x, y, hit, first_.rgba.data() + 4 * i, first_depth_[i]);
+      }
+    }
+  }
+
+  void edge_tile(std::size_t t, const std::vector<std::uint32_t>& edges, Worker& w)
+  {
+    const int ss = ss_;
+    const int px0 = static_cast<int>(t % tiles_x_) * kTile, py0 = static_cast<int>(t / tiles_x_) * kTile;
+    const int px1 = std::min(target_.width, px0 + kTile), py1 = std::min(target_.height, py0 + kTile);
+    const int sw = (px1 - px0) * ss, sh = (py1 - py0) * ss;
+    w.active.assign(static_cast<std::size_t>(sw) * sh, 0);
+    for (const std::uint32_t e : edges)
+    {
+      const int x = static_cast<int>(e % target_.width) - px0, y = static_cast<int>(e / target_.width) - py0;
+      for (int j = 0; j < ss; ++j)
+      {
+        for (int i = 0; i < ss; ++i)
+        {
+          w.active[static_cast<std::size_t>(y * ss + j) * sw + (x * ss + i)] = 1;
+        }
+      }
+    }
+    w.hits.resize(w.active.size());
+    w.fine.trace_tile(px0 * ss, py0 * ss, px1 * ss, py1 * ss, w.hits, w.active.data());
+    for (const std::uint32_t e : edges)
+    {
+      const int x = static_cast<int>(e % target_.width), y = static_cast<int>(e / target_.width);
+      double r = 0.0, g = 0.0, b = 0.0, a = 0.0;
+      float nearest = std::numeric_limits<float>::infinity();
+      for (int j = 0; j < ss; ++j)
+      {
+        for (int i = 0; i < ss; ++i)
+        {
+          float rgba[4] = { 0.0F, 0.0F, 0.0F, 0.0F };
+          float sample_depth = std::numeric_limits<float>::infinity();
+          const std::size_t k =
+            static_cast<std::size_t>((y - py0) * ss + j) * sw + ((x - px0) * ss + i);
+          shade_sample(c_, samples_, w, x * ss + i, y * ss + j, w.hits[k], rgba, sample_depth);
+          r += rgba[0] * rgba[3];
+          g += rgba[1] * rgba[3];
+          b += rgba[2] * rgba[3];
+          a += rgba[3];
+          nearest = std::min(nearest, sample_depth);
+        }
+      }
+      float* out = first_.rgba.data() + 4 * static_cast<std::size_t>(e);
+      const double n = static_cast<double>(ss) * ss;
+      out[0] = a > 0.0 ? static_cast<float>(r / a) : 0.0F;
+      out[1] = a > 0.0 ? static_cast<float>(g / a) : 0.0F;
+      out[2] = a > 0.0 ? static_cast<float>(b / a) : 0.0F;
+      out[3] = static_cast<float>(a / n);
+      first_depth_[e] = nearest;
+    }
+  }
+
+  const Context& c_;
+  const render::Image& target_;
+  const detail::ViewRays& pixels_;
+  const detail::ViewRays& samples_;
+  const std::array<Interval, 3>& clip_;
+  const detail::TraceOptions& options_;
+  ThreadPool& pool_;
+  const int ss_;
+  const std::function<bool()>& cancel_;
+  const std::function<void(double)>& progress_;
+  const int tiles_x_, tiles_y_;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::atomic<bool> cancelled_{ false };
+  const std::thread::id caller_ = std::this_thread::get_id();
+  std::atomic<std::size_t> finished_{ 0 };
+  double reported_ = 0.0;
+  render::Image first_;
+  std::vector<float> first_depth_;
+  std::vector<Seen> seen_;
+};
+
 } // namespace
 
 Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi)
@@ -376,178 +602,27 @@ Result render(render::Image& target,
 
   detail::TraceOptions options;
   options.from = pixels.near;
-  std::vector<std::unique_ptr<Worker>> workers(static_cast<std::size_t>(pool.size()));
-  const auto worker = [&](int slot) -> Worker&
-  {
-    auto& w = workers[static_cast<std::size_t>(slot)];
-    if (!w)
-    {
-      w = std::make_unique<Worker>(shape, clip, pixels, samples, options);
-    }
-    return *w;
-  };
-  std::atomic<bool> cancelled{ false };
-  const auto stop = [&]
-  {
-    if (cancelled.load(std::memory_order_relaxed) || (cancel && cancel()))
-    {
-      cancelled = true;
-    }
-    return cancelled.load(std::memory_order_relaxed);
-  };
-  // Progress: tiles finished per pass, reported only on the calling thread (a participant of
-  // the pool), so the callback needs no locking; the pixel pass is the first 70 %.
-  const std::thread::id caller = std::this_thread::get_id();
-  std::atomic<std::size_t> finished{ 0 };
-  double reported = 0.0;
-  const auto report = [&](double from, double span, std::size_t total)
-  {
-    const std::size_t done = finished.fetch_add(1, std::memory_order_relaxed) + 1;
-    if (progress && std::this_thread::get_id() == caller && total > 0)
-    {
-      const double fraction = from + span * static_cast<double>(done) / static_cast<double>(total);
-      if (fraction >= reported + 0.01) // at most about 100 calls
-      {
-        reported = fraction;
-        progress(fraction);
-      }
-    }
-  };
-
-  // 1. One ray per pixel, tile by tile.
-  const int tiles_x = (target.width + kTile - 1) / kTile, tiles_y = (target.height + kTile - 1) / kTile;
-  render::Image first(target.width, target.height);
-  const std::size_t pixel_count = static_cast<std::size_t>(target.width) * target.height;
-  std::vector<float> first_depth(pixel_count, std::numeric_limits<float>::infinity());
-  std::vector<Seen> seen(pixel_count, Seen::Nothing);
-  pool.parallel_for(static_cast<std::size_t>(tiles_x) * tiles_y,
-    [&](std::size_t t, int slot)
-    {
-      if (stop())
-      {
-        return;
-      }
-      Worker& w = worker(slot);
-      const int x0 = static_cast<int>(t % tiles_x) * kTile, y0 = static_cast<int>(t / tiles_x) * kTile;
-      const int x1 = std::min(target.width, x0 + kTile), y1 = std::min(target.height, y0 + kTile);
-      w.hits.resize(static_cast<std::size_t>(x1 - x0) * (y1 - y0));
-      w.tracer.trace_tile(x0, y0, x1, y1, w.hits);
-      for (int y = y0; y < y1; ++y)
-      {
-        for (int x = x0; x < x1; ++x)
-        {
-          const std::size_t i = static_cast<std::size_t>(y) * target.width + x;
-          const detail::Hit& hit = w.hits[static_cast<std::size_t>(y - y0) * (x1 - x0) + (x - x0)];
-          seen[i] = shade_sample(c, pixels, w, x, y, hit, first.rgba.data() + 4 * i, first_depth[i]);
-        }
-      }
-      report(0.0, ss > 1 ? 0.7 : 1.0, static_cast<std::size_t>(tiles_x) * tiles_y);
-    });
-
-  // 2. Edges: supersample x supersample rays per pixel, averaged like render::downsample.
+  Frame frame(c, target, pixels, samples, clip, options, pool, ss, cancel, progress);
+  frame.trace_pixels();
   const auto edge_start = std::chrono::steady_clock::now();
-  if (ss > 1 && !cancelled)
+  if (ss > 1 && !frame.cancelled())
   {
-    const std::vector<std::uint32_t> edges = edge_pixels(first, seen, first_depth, pixels);
-    result.statistics.edge_pixels = edges.size();
-    // By tile, so that a tile's edge pixels share its pieces: only their rays are traced.
-    std::vector<std::vector<std::uint32_t>> by_tile(static_cast<std::size_t>(tiles_x) * tiles_y);
-    for (const std::uint32_t e : edges)
-    {
-      const int x = static_cast<int>(e % target.width), y = static_cast<int>(e / target.width);
-      by_tile[static_cast<std::size_t>(y / kTile) * tiles_x + x / kTile].push_back(e);
-    }
-    std::size_t edge_tiles = 0;
-    for (const auto& tile : by_tile)
-    {
-      edge_tiles += tile.empty() ? 0 : 1;
-    }
-    finished = 0;
-    pool.parallel_for(by_tile.size(),
-      [&](std::size_t t, int slot)
-      {
-        if (by_tile[t].empty() || stop())
-        {
-          return;
-        }
-        Worker& w = worker(slot);
-        const int px0 = static_cast<int>(t % tiles_x) * kTile, py0 = static_cast<int>(t / tiles_x) * kTile;
-        const int px1 = std::min(target.width, px0 + kTile), py1 = std::min(target.height, py0 + kTile);
-        const int sw = (px1 - px0) * ss, sh = (py1 - py0) * ss;
-        w.active.assign(static_cast<std::size_t>(sw) * sh, 0);
-        for (const std::uint32_t e : by_tile[t])
-        {
-          const int x = static_cast<int>(e % target.width) - px0, y = static_cast<int>(e / target.width) - py0;
-          for (int j = 0; j < ss; ++j)
-          {
-            for (int i = 0; i < ss; ++i)
-            {
-              w.active[static_cast<std::size_t>(y * ss + j) * sw + (x * ss + i)] = 1;
-            }
-          }
-        }
-        w.hits.resize(w.active.size());
-        w.fine.trace_tile(px0 * ss, py0 * ss, px1 * ss, py1 * ss, w.hits, w.active.data());
-        for (const std::uint32_t e : by_tile[t])
-        {
-          const int x = static_cast<int>(e % target.width), y = static_cast<int>(e / target.width);
-          double r = 0.0, g = 0.0, b = 0.0, a = 0.0;
-          float nearest = std::numeric_limits<float>::infinity();
-          for (int j = 0; j < ss; ++j)
-          {
-            for (int i = 0; i < ss; ++i)
-            {
-              float rgba[4] = { 0.0F, 0.0F, 0.0F, 0.0F };
-              float sample_depth = std::numeric_limits<float>::infinity();
-              const std::size_t k =
-                static_cast<std::size_t>((y - py0) * ss + j) * sw + ((x - px0) * ss + i);
-              shade_sample(c, samples, w, x * ss + i, y * ss + j, w.hits[k], rgba, sample_depth);
-              r += rgba[0] * rgba[3];
-              g += rgba[1] * rgba[3];
-              b += rgba[2] * rgba[3];
-              a += rgba[3];
-              nearest = std::min(nearest, sample_depth);
-            }
-          }
-          float* out = first.rgba.data() + 4 * static_cast<std::size_t>(e);
-          const double n = static_cast<double>(ss) * ss;
-          out[0] = a > 0.0 ? static_cast<float>(r / a) : 0.0F;
-          out[1] = a > 0.0 ? static_cast<float>(g / a) : 0.0F;
-          out[2] = a > 0.0 ? static_cast<float>(b / a) : 0.0F;
-          out[3] = static_cast<float>(a / n);
-          first_depth[e] = nearest;
-        }
-        report(0.7, 0.3, edge_tiles);
-      });
+    result.statistics.edge_pixels = frame.supersample_edges();
   }
   result.statistics.edge_seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - edge_start).count();
-  for (const auto& w : workers)
-  {
-    if (w)
-    {
-      for (const detail::PieceTracer* t : { &w->tracer, &w->fine })
-      {
-        const Statistics& s = t->statistics();
-        result.statistics.rays += s.rays;
-        result.statistics.rays_in_box += s.rays_in_box;
-        result.statistics.hits += s.hits;
-        result.statistics.interval_evaluations += s.interval_evaluations;
-        result.statistics.point_evaluations += s.point_evaluations;
-      }
-    }
-  }
-  if (cancelled)
+  frame.add_statistics(result.statistics);
+  if (frame.cancelled())
   {
     result.error = "cancelled";
     return result;
   }
-  render::composite_over(target, first, 0, 0);
+  render::composite_over(target, frame.picture(), 0, 0);
   if (depth)
   {
-    *depth = std::move(first_depth);
+    *depth = std::move(frame.depth());
   }
-  if (progress && reported < 1.0)
+  if (progress && frame.reported() < 1.0)
   {
     progress(1.0);
   }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string>
 
 namespace frep::render::detail
 {
@@ -339,47 +341,55 @@ Projection::Projection(const Camera& camera, int sample_width, int sample_height
   near = camera.near_distance > 0.0 ? camera.near_distance : 1e-6;
 }
 
-MeshSetup setup_mesh(const MeshInput& mesh, const Projection& pr, int threads, RenderReport& report)
+namespace
 {
-  MeshSetup out;
-  report.triangles = mesh.triangles.size() / 3;
+
+/// Why the mesh cannot be drawn (array lengths, the number of points), or "".
+std::string check_mesh(const MeshInput& mesh)
+{
+  std::string error;
   if (mesh.points.size() % 3 != 0)
   {
-    report.error = "render: the point array's length is not a multiple of 3";
+    error = "render: the point array's length is not a multiple of 3";
   }
   else if (mesh.triangles.size() % 3 != 0)
   {
-    report.error = "render: the triangle array's length is not a multiple of 3";
+    error = "render: the triangle array's length is not a multiple of 3";
   }
   else if (!mesh.normals.empty() && mesh.normals.size() != mesh.points.size())
   {
-    report.error = "render: there must be 3 normal components per point (or none)";
+    error = "render: there must be 3 normal components per point (or none)";
   }
   else if (!mesh.colours.empty() && mesh.colours.size() != mesh.points.size())
   {
-    report.error = "render: there must be 3 colour components per point (or none)";
+    error = "render: there must be 3 colour components per point (or none)";
   }
   else if (mesh.points.size() / 3 >= kLocalBit)
   {
-    report.error = "render: too many points (at most 2^31)";
+    error = "render: too many points (at most 2^31)";
   }
-  if (!report.error.empty() || mesh.points.empty() || mesh.triangles.empty())
-  {
-    return out;
-  }
-  const std::size_t n = mesh.points.size() / 3;
-  const std::size_t triangle_count = mesh.triangles.size() / 3;
+  return error;
+}
 
-  // World positions.
+/// The points in world space (through the mesh's transform, if any).
+std::vector<Vec> world_points(const MeshInput& mesh)
+{
+  const std::size_t n = mesh.points.size() / 3;
   std::vector<Vec> world(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const Vec p{ mesh.points[3 * i], mesh.points[3 * i + 1], mesh.points[3 * i + 2] };
     world[i] = mesh.transform ? transform_point(*mesh.transform, p) : p;
   }
+  return world;
+}
 
-  // World normals: given (through the normal matrix) or area-weighted from the triangles (the
-  // unnormalised cross product is twice the area times the unit normal).
+/// World normals: given (through the normal matrix) or area-weighted from the triangles (the
+/// unnormalised cross product is twice the area times the unit normal).
+std::vector<Vec> world_normals(const MeshInput& mesh, const std::vector<Vec>& world)
+{
+  const std::size_t n = world.size();
+  const std::size_t triangle_count = mesh.triangles.size() / 3;
   std::vector<Vec> normal(n, Vec{ 0.0, 0.0, 0.0 });
   if (!mesh.normals.empty())
   {
@@ -418,8 +428,14 @@ MeshSetup setup_mesh(const MeshInput& mesh, const Projection& pr, int threads, R
       }
     }
   }
+  return normal;
+}
 
-  // Camera space, projection and outcodes, in chunks of points.
+/// Camera space, projection and outcodes of the points, in chunks of points on `threads`.
+PointData camera_points(const MeshInput& mesh, const Projection& pr, const std::vector<Vec>& world,
+  const std::vector<Vec>& normal, int threads)
+{
+  const std::size_t n = world.size();
   PointData pts;
   pts.camera.resize(n);
   pts.vertex.resize(n);
@@ -465,6 +481,59 @@ MeshSetup setup_mesh(const MeshInput& mesh, const Projection& pr, int threads, R
         }
       }
     });
+  return pts;
+}
+
+/// The depth of the centre of the bounding box of the drawable points, for ordering transparent
+/// layers; none when no point is drawable.
+std::optional<double> centre_depth(const std::vector<Vec>& world, const PointData& pts,
+  const Projection& pr)
+{
+  const std::size_t n = world.size();
+  const CameraFrame& f = pr.frame;
+  Vec lo{ std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  Vec hi{ -lo[0], -lo[1], -lo[2] };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (pts.outcode[i] != 0xFF)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        lo[j] = std::min(lo[j], world[i][j]);
+        hi[j] = std::max(hi[j], world[i][j]);
+      }
+    }
+  }
+  if (lo[0] <= hi[0])
+  {
+    const Vec centre{ 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
+    return dot(sub(centre, pr.eye), f.forward);
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
+MeshSetup setup_mesh(const MeshInput& mesh, const Projection& pr, int threads, RenderReport& report)
+{
+  MeshSetup out;
+  report.triangles = mesh.triangles.size() / 3;
+  if (std::string error = check_mesh(mesh); !error.empty())
+  {
+    report.error = std::move(error);
+  }
+  if (!report.error.empty() || mesh.points.empty() || mesh.triangles.empty())
+  {
+    return out;
+  }
+  const std::size_t n = mesh.points.size() / 3;
+  const std::size_t triangle_count = mesh.triangles.size() / 3;
+
+  const std::vector<Vec> world = world_points(mesh);
+  const std::vector<Vec> normal = world_normals(mesh, world);
+  PointData pts = camera_points(mesh, pr, world, normal, threads);
 
   // Triangles, in fixed chunks (the output does not depend on the thread count).
   std::vector<Chunk> chunks((triangle_count + kTriangleChunk - 1) / kTriangleChunk);
@@ -514,26 +583,9 @@ MeshSetup setup_mesh(const MeshInput& mesh, const Projection& pr, int threads, R
     report.triangles_clipped += c.clipped;
   }
 
-  // Depth of the bounding box centre, for ordering transparent layers.
-  Vec lo{ std::numeric_limits<double>::infinity(),
-    std::numeric_limits<double>::infinity(),
-    std::numeric_limits<double>::infinity() };
-  Vec hi{ -lo[0], -lo[1], -lo[2] };
-  for (std::size_t i = 0; i < n; ++i)
+  if (const std::optional<double> d = centre_depth(world, pts, pr))
   {
-    if (pts.outcode[i] != 0xFF)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        lo[j] = std::min(lo[j], world[i][j]);
-        hi[j] = std::max(hi[j], world[i][j]);
-      }
-    }
-  }
-  if (lo[0] <= hi[0])
-  {
-    const Vec centre{ 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
-    out.centre_depth = dot(sub(centre, pr.eye), f.forward);
+    out.centre_depth = *d;
   }
   return out;
 }

@@ -160,6 +160,127 @@ Specialisation section_specialisation(const Plan& plan,
   return s;
 }
 
+namespace
+{
+
+/// Per-vertex colours of the section's surface, from the model-space positions (before they move
+/// to world space): a world coordinate through the colour map, or s[1..3]. The error, or "".
+std::string colour_vertices(const Plan& plan, const Sample& sample, int axes, Section& section)
+{
+  const mesh::Surface& surface = section.surface;
+  const std::size_t n = surface.point_count();
+  const VertexColouring& vc = plan.vertex_colouring;
+  if (vc.source == VertexColouring::Source::WorldCoordinate)
+  {
+    int axis = -1;
+    for (int k = 0; k < axes; ++k)
+    {
+      axis = plan.world_coordinates[k] == vc.coordinate ? k : axis;
+    }
+    ChannelMap::Result map = ChannelMap::make(vc.range, vc.curve, Interval{ 0.0, 1.0 });
+    if (!map.ok() || axis < 0)
+    {
+      return "vertex colours: " + (map.ok() ? "the coordinate is not a world one" : map.error);
+    }
+    const std::optional<int> component = colour_component(vc.colormap);
+    section.colours.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double v = std::clamp(map.map.forward(surface.points[3 * i + axis]), 0.0, 1.0);
+      Rgb rgb = sample.colour;
+      if (component)
+      {
+        rgb[*component] = v;
+      }
+      else if (const std::optional<Rgb> c = colour_map(vc.colormap, v))
+      {
+        rgb = *c;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        section.colours[3 * i + c] = static_cast<float>(rgb[c]);
+      }
+    }
+  }
+  else if (vc.source == VertexColouring::Source::Attributes && surface.attribute_count > 0)
+  {
+    // s[1..3] as RGB, the rule of every output (Compiler/attribute_rgb.h).
+    const auto m = static_cast<std::size_t>(surface.attribute_count);
+    section.colours.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const AttributeRgb rgb = attribute_rgb(surface.attributes.data() + i * m, m);
+      std::copy(
+        rgb.begin(), rgb.end(), section.colours.begin() + static_cast<std::ptrdiff_t>(3 * i));
+    }
+  }
+  return {};
+}
+
+/// Model box -> world space. Linear maps keep the mesh exactly; curves and the cylindrical /
+/// spherical systems bend it (the grid is fine, so the triangles follow). The error, or "".
+std::string place_in_world(const Plan& plan, const Sample& sample, int axes, mesh::Surface& surface)
+{
+  const std::size_t n = surface.point_count();
+  std::string world_error;
+  const std::unique_ptr<WorldMapping> world = WorldMapping::make(plan, world_error);
+  if (!world)
+  {
+    return world_error;
+  }
+  const Affine transform(sample.transform);
+  const bool identity = transform.is_identity();
+  bool flip = !transform.orientation_preserving;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 3> p{
+      surface.points[3 * i], surface.points[3 * i + 1], axes == 3 ? surface.points[3 * i + 2] : 0.0
+    };
+    std::array<double, 3> w = world->to_world(p);
+    if (!surface.normals.empty())
+    {
+      const std::array<double, 9> j = world->jacobian(p);
+      // The Jacobian's normal matrix (Render/normal_matrix.h): signed, so normals stay outward.
+      const render::Matrix3 q = render::normal_matrix(j);
+      if (i == 0 && render::determinant(j) < 0)
+      {
+        flip = !flip; // a reversed target mirrors the shape: keep the triangles outward
+      }
+      std::array<double, 3> nm{ 0, 0, 0 };
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          nm[r] += q[r * 3 + c] * surface.normals[3 * i + c];
+        }
+      }
+      nm = normalised(identity ? nm : transform.normal(nm));
+      for (int c = 0; c < 3; ++c)
+      {
+        surface.normals[3 * i + c] = static_cast<float>(nm[c]);
+      }
+    }
+    if (!identity)
+    {
+      w = transform.point(w);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      surface.points[3 * i + c] = w[c];
+    }
+  }
+  if (flip && surface.dimension == 3)
+  {
+    for (std::size_t t = 0; t + 2 < surface.cells.size(); t += 3)
+    {
+      std::swap(surface.cells[t + 1], surface.cells[t + 2]);
+    }
+  }
+  return {};
+}
+
+} // namespace
+
 Section make_section(const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
@@ -216,113 +337,16 @@ Section make_section(const Model& model,
   }
   section.surface = std::move(r.surface);
   mesh::Surface& surface = section.surface;
-  const std::size_t n = surface.point_count();
 
-  // Per-vertex colours, from the model-space positions (before they move to world space).
-  const VertexColouring& vc = plan.vertex_colouring;
-  if (vc.source == VertexColouring::Source::WorldCoordinate)
+  if (std::string error = colour_vertices(plan, sample, axes, section); !error.empty())
   {
-    int axis = -1;
-    for (int k = 0; k < axes; ++k)
-    {
-      axis = plan.world_coordinates[k] == vc.coordinate ? k : axis;
-    }
-    ChannelMap::Result map = ChannelMap::make(vc.range, vc.curve, Interval{ 0.0, 1.0 });
-    if (!map.ok() || axis < 0)
-    {
-      section.error =
-        "vertex colours: " + (map.ok() ? "the coordinate is not a world one" : map.error);
-      return section;
-    }
-    const std::optional<int> component = colour_component(vc.colormap);
-    section.colours.resize(3 * n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const double v = std::clamp(map.map.forward(surface.points[3 * i + axis]), 0.0, 1.0);
-      Rgb rgb = sample.colour;
-      if (component)
-      {
-        rgb[*component] = v;
-      }
-      else if (const std::optional<Rgb> c = colour_map(vc.colormap, v))
-      {
-        rgb = *c;
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        section.colours[3 * i + c] = static_cast<float>(rgb[c]);
-      }
-    }
-  }
-  else if (vc.source == VertexColouring::Source::Attributes && surface.attribute_count > 0)
-  {
-    // s[1..3] as RGB, the rule of every output (Compiler/attribute_rgb.h).
-    const auto m = static_cast<std::size_t>(surface.attribute_count);
-    section.colours.resize(3 * n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const AttributeRgb rgb = attribute_rgb(surface.attributes.data() + i * m, m);
-      std::copy(
-        rgb.begin(), rgb.end(), section.colours.begin() + static_cast<std::ptrdiff_t>(3 * i));
-    }
-  }
-
-  // Model box -> world space. Linear maps keep the mesh exactly; curves and the cylindrical /
-  // spherical systems bend it (the grid is fine, so the triangles follow).
-  std::string world_error;
-  const std::unique_ptr<WorldMapping> world = WorldMapping::make(plan, world_error);
-  if (!world)
-  {
-    section.error = world_error;
+    section.error = std::move(error);
     return section;
   }
-  const Affine transform(sample.transform);
-  const bool identity = transform.is_identity();
-  bool flip = !transform.orientation_preserving;
-  for (std::size_t i = 0; i < n; ++i)
+  if (std::string error = place_in_world(plan, sample, axes, surface); !error.empty())
   {
-    const std::array<double, 3> p{
-      surface.points[3 * i], surface.points[3 * i + 1], axes == 3 ? surface.points[3 * i + 2] : 0.0
-    };
-    std::array<double, 3> w = world->to_world(p);
-    if (!surface.normals.empty())
-    {
-      const std::array<double, 9> j = world->jacobian(p);
-      // The Jacobian's normal matrix (Render/normal_matrix.h): signed, so normals stay outward.
-      const render::Matrix3 q = render::normal_matrix(j);
-      if (i == 0 && render::determinant(j) < 0)
-      {
-        flip = !flip; // a reversed target mirrors the shape: keep the triangles outward
-      }
-      std::array<double, 3> nm{ 0, 0, 0 };
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          nm[r] += q[r * 3 + c] * surface.normals[3 * i + c];
-        }
-      }
-      nm = normalised(identity ? nm : transform.normal(nm));
-      for (int c = 0; c < 3; ++c)
-      {
-        surface.normals[3 * i + c] = static_cast<float>(nm[c]);
-      }
-    }
-    if (!identity)
-    {
-      w = transform.point(w);
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      surface.points[3 * i + c] = w[c];
-    }
-  }
-  if (flip && surface.dimension == 3)
-  {
-    for (std::size_t t = 0; t + 2 < surface.cells.size(); t += 3)
-    {
-      std::swap(surface.cells[t + 1], surface.cells[t + 2]);
-    }
+    section.error = std::move(error);
+    return section;
   }
   return section;
 }

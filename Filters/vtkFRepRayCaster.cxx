@@ -185,6 +185,49 @@ int vtkFRepRayCaster::RequestUpdateExtent(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+// The engine's picture as the output's point data: Colour (sRGB bytes with alpha) and Depth. The
+// engine's rows run top to bottom, VTK's image rows bottom to top. Throws std::bad_alloc.
+static void StorePicture(
+  const frep::render::Image& picture, const std::vector<float>& depth, vtkImageData* output)
+{
+  const int width = picture.width, height = picture.height;
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  vtkNew<vtkUnsignedCharArray> rgba;
+  rgba->SetName("Colour");
+  rgba->SetNumberOfComponents(4);
+  vtkNew<vtkFloatArray> distance;
+  distance->SetName("Depth");
+  distance->SetNumberOfComponents(1);
+  if (!rgba->SetNumberOfValues(static_cast<vtkIdType>(4 * pixels)) ||
+    !distance->SetNumberOfValues(static_cast<vtkIdType>(pixels)))
+  {
+    throw std::bad_alloc();
+  }
+  unsigned char* c = rgba->GetPointer(0);
+  float* d = distance->GetPointer(0);
+  for (int y = 0; y < height; ++y)
+  {
+    const std::size_t row = static_cast<std::size_t>(height - 1 - y) * width;
+    for (int x = 0; x < width; ++x)
+    {
+      const float* p = picture.pixel(x, y);
+      unsigned char* q = c + 4 * (row + x);
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = ToByte(frep::render::linear_to_srgb(p[k]));
+      }
+      q[3] = ToByte(p[3]);
+      d[row + x] = depth[static_cast<std::size_t>(y) * width + x];
+    }
+  }
+  output->SetOrigin(0.0, 0.0, 0.0);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  output->GetPointData()->SetScalars(rgba);
+  output->GetPointData()->AddArray(distance);
+}
+
+//------------------------------------------------------------------------------
 int vtkFRepRayCaster::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -293,40 +336,7 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
       return 1;
     }
 
-    vtkNew<vtkUnsignedCharArray> rgba;
-    rgba->SetName("Colour");
-    rgba->SetNumberOfComponents(4);
-    vtkNew<vtkFloatArray> distance;
-    distance->SetName("Depth");
-    distance->SetNumberOfComponents(1);
-    if (!rgba->SetNumberOfValues(static_cast<vtkIdType>(4 * pixels)) ||
-        !distance->SetNumberOfValues(static_cast<vtkIdType>(pixels)))
-    {
-      throw std::bad_alloc();
-    }
-    unsigned char* c = rgba->GetPointer(0);
-    float* d = distance->GetPointer(0);
-    // The engine's rows run top to bottom, VTK's image rows bottom to top.
-    for (int y = 0; y < height; ++y)
-    {
-      const std::size_t row = static_cast<std::size_t>(height - 1 - y) * width;
-      for (int x = 0; x < width; ++x)
-      {
-        const float* p = picture.pixel(x, y);
-        unsigned char* q = c + 4 * (row + x);
-        for (int k = 0; k < 3; ++k)
-        {
-          q[k] = ToByte(frep::render::linear_to_srgb(p[k]));
-        }
-        q[3] = ToByte(p[3]);
-        d[row + x] = depth[static_cast<std::size_t>(y) * width + x];
-      }
-    }
-    output->SetOrigin(0.0, 0.0, 0.0);
-    output->SetSpacing(1.0, 1.0, 1.0);
-    output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
-    output->GetPointData()->SetScalars(rgba);
-    output->GetPointData()->AddArray(distance);
+    StorePicture(picture, depth, output);
   }
   catch (const std::bad_alloc&)
   {

@@ -17,10 +17,12 @@
 #include "Library/library.h"
 #include "Library/library_generic.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <map>
 #include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
@@ -281,30 +283,107 @@ private:
       execute_block(frame, c.constant() != 0 ? s.then_block : s.else_block);
       return;
     }
+    // Only the scalars the branches assign can differ between them: those are saved, run in
+    // each branch and merged, not the whole frame (a .vm tape's thousands of choices over
+    // thousands of scalars would otherwise cost the product). Arrays are few: all are kept.
+    const std::vector<int>& touched = assigned_scalars(s);
+    std::vector<Cell> before = gather(frame.scalars, touched);
+    std::vector<std::vector<Cell>> then_arrays = frame.arrays;
     const Expr outer_path = path_;
-    Frame other = frame;
     path_ = logical_and(outer_path, c);
     execute_block(frame, s.then_block);
     const bool then_dead = dead_;
     dead_ = false;
+    std::vector<Cell> then_scalars = gather(frame.scalars, touched);
+    std::swap(then_arrays, frame.arrays); // frame: the state before, then_arrays: the then branch's
+    scatter(frame.scalars, touched, before);
     path_ = logical_and(outer_path, logical_not(c));
-    execute_block(other, s.else_block);
+    execute_block(frame, s.else_block);
     const bool else_dead = dead_;
     path_ = outer_path;
     dead_ = then_dead && else_dead;
     if (then_dead || else_dead)
     {
-      // Points on a dead branch have failed: only the live branch's state matters.
-      if (then_dead && !else_dead)
+      // Points on a dead branch have failed: only the live branch's state matters (the frame
+      // holds the else branch's).
+      if (else_dead && !then_dead)
       {
-        frame = std::move(other);
+        scatter(frame.scalars, touched, then_scalars);
+        frame.arrays = std::move(then_arrays);
       }
       return;
     }
-    merge(c, frame.scalars, other.scalars);
+    std::vector<Cell> else_scalars = gather(frame.scalars, touched);
+    merge(c, then_scalars, else_scalars);
+    scatter(frame.scalars, touched, then_scalars);
     for (std::size_t i = 0; i < frame.arrays.size(); ++i)
     {
-      merge(c, frame.arrays[i], other.arrays[i]);
+      merge(c, then_arrays[i], frame.arrays[i]);
+    }
+    frame.arrays = std::move(then_arrays);
+  }
+
+  static std::vector<Cell> gather(const std::vector<Cell>& cells, const std::vector<int>& which)
+  {
+    std::vector<Cell> out;
+    out.reserve(which.size());
+    for (const int k : which)
+    {
+      out.push_back(cells[static_cast<std::size_t>(k)]);
+    }
+    return out;
+  }
+
+  static void scatter(std::vector<Cell>& cells, const std::vector<int>& which,
+    const std::vector<Cell>& values)
+  {
+    for (std::size_t i = 0; i < which.size(); ++i)
+    {
+      cells[static_cast<std::size_t>(which[i])] = values[i];
+    }
+  }
+
+  /// The scalars an if-statement's branches assign (at any depth), in increasing order: the only
+  /// ones that can differ between the branches (a scalar changes only by assignment; calls
+  /// change arrays). Computed once per statement.
+  const std::vector<int>& assigned_scalars(const ast::IfStmt& s)
+  {
+    auto [it, inserted] = assigned_scalars_.try_emplace(&s);
+    if (inserted)
+    {
+      std::vector<int>& out = it->second;
+      collect_assigned(s.then_block, out);
+      collect_assigned(s.else_block, out);
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      for (const int k : out)
+      {
+        if (k < 0)
+        {
+          throw CannotCompile("malformed AST: bad scalar index");
+        }
+      }
+    }
+    return it->second;
+  }
+
+  static void collect_assigned(const ast::Block& block, std::vector<int>& out)
+  {
+    for (const ast::Stmt& stmt : block)
+    {
+      if (const auto* a = std::get_if<ast::AssignScalar>(&stmt.node))
+      {
+        out.push_back(a->scalar);
+      }
+      else if (const auto* i = std::get_if<ast::IfStmt>(&stmt.node))
+      {
+        collect_assigned(i->then_block, out);
+        collect_assigned(i->else_block, out);
+      }
+      else if (const auto* w = std::get_if<ast::WhileStmt>(&stmt.node))
+      {
+        collect_assigned(w->body, out);
+      }
     }
   }
 
@@ -886,6 +965,7 @@ private:
   int call_depth_ = 0;
   std::map<std::tuple<std::string, int, int, std::string>, int> error_ids_;
   std::unordered_set<NodeId> guarded_;
+  std::unordered_map<const ast::IfStmt*, std::vector<int>> assigned_scalars_;
   /// The file of the object being lowered (run-time errors name it).
   const std::string* file_ = &program_.file;
 

@@ -28,6 +28,10 @@ run "unknown option is a usage error" 1 "$frepkit" eval "$sphere" --no-such-opti
 # --- check
 run "check ok" 0 "$frepkit" check "$sphere"
 expect_in "check lists the object" "$out" "my_model(x[3], a[1], s[1])"
+expect_in "check: s[1] without s[] is the original's" "$out" "s[1] implicit, as in HyperFun: the header declares no s[]"
+with_s=$(model with_s.hf 'my_model(x[3], a[1], s[2]) { s[2] = 1; my_model = 1; }')
+run "check with s[2]" 0 "$frepkit" check "$with_s"
+[[ "$out" == *"s[2])"* && "$out" != *"implicit"* ]] && pass "declared s[]: no note" || fail "declared s[]: $out"
 run "check missing file" 1 "$frepkit" check "$work/none.hf"
 expect_in "missing file message" "$err" "cannot open"
 prog="$shared/hyperfun/models/web__paulbourke.net/HF_prog.hf"

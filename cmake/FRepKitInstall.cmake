@@ -1,9 +1,10 @@
 # What `cmake --install build --prefix P` installs, and the Debian package (`cpack -G DEB`):
 #   P/bin/frepkit, P/bin/FRepStudio            RUNPATH $ORIGIN/../lib
-#   P/bin/paraview.conf                        the plugins XMLs the ParaView GUI in P/bin reads
+#   P/bin/paraview.conf                        the plugins XMLs the ParaView GUI in P/bin reads (*)
 #   P/lib/libFRepKit<Name>.so.<version>        the plain libraries and the VTK modules
 #   P/lib/paraview-5.11/plugins/FRepKit/       the ParaView plug-in, frepkit.plugins.xml beside it
-#   P/lib/<multiarch>/paraview-5.11/plugins/   links to it: where Debian's ParaView looks
+#   P/lib/<multiarch>/paraview-5.11/plugins/   links to it: where Debian's ParaView looks (*)
+#   (*) only when P is /usr (the .deb) or with FREPKIT_INSTALL_DEBIAN_PARAVIEW_LINKS=ON
 #   P/include/frepkit/                         the public headers only
 #   P/lib/cmake/frepkit/                       FRepKitConfig.cmake, version, targets, module props
 #   P/share/frepkit/examples/                  the models and mappings (frepkit demo finds them)
@@ -41,25 +42,34 @@ install(DIRECTORY Documentation/ DESTINATION share/doc/frepkit/Documentation)
 
 # --- The ParaView plug-in in ParaView's own folder ----------------------------------------------
 # paraview_plugin_build (ParaViewPlugin/) installs FRepKit/FRepKit.so and frepkit.plugins.xml
-# under FREPKIT_INSTALL_PLUGIN_DIR; link both where Debian's ParaView finds plug-ins by name.
+# under FREPKIT_INSTALL_PLUGIN_DIR. Only for the Debian package (the install prefix /usr, decided
+# when installing: `cmake --install --prefix` may change it) or when asked with
+# FREPKIT_INSTALL_DEBIAN_PARAVIEW_LINKS: link both where Debian's ParaView finds plug-ins by name,
+# and write bin/paraview.conf. The ParaView GUI (5.11) reads the plugins XMLs listed in <its
+# bin>/paraview.conf; Debian's package ships none, so neither its own paraview.plugins.xml nor
+# ours would be read. This one lists both: in /usr the GUI then auto-loads FRepKit. Under any
+# other prefix they would only clutter it (no ParaView there reads them).
+option(FREPKIT_INSTALL_DEBIAN_PARAVIEW_LINKS
+  "Install the links for Debian's ParaView and bin/paraview.conf under any prefix (always in /usr)"
+  OFF)
 if(TARGET FRepKit AND FREPKIT_PARAVIEW_PLUGIN_LINK_DIR)
   file(RELATIVE_PATH _frepkit_plugin_link_target
     "/prefix/${FREPKIT_PARAVIEW_PLUGIN_LINK_DIR}" "/prefix/${FREPKIT_INSTALL_PLUGIN_DIR}")
-  install(CODE "
-    set(_dir \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${FREPKIT_PARAVIEW_PLUGIN_LINK_DIR}\")
-    file(MAKE_DIRECTORY \"\${_dir}\")
-    foreach(_name IN ITEMS FRepKit frepkit.plugins.xml)
-      message(STATUS \"Installing: \${_dir}/\${_name} -> ${_frepkit_plugin_link_target}/\${_name}\")
-      file(CREATE_LINK \"${_frepkit_plugin_link_target}/\${_name}\" \"\${_dir}/\${_name}\" SYMBOLIC)
-    endforeach()")
-  unset(_frepkit_plugin_link_target)
-  # The ParaView GUI (5.11) reads the plugins XMLs listed in <its bin>/paraview.conf; Debian's
-  # package ships none, so neither its own paraview.plugins.xml nor ours would be read. This one
-  # lists both: in /usr (the .deb) the GUI then auto-loads FRepKit.
   file(WRITE "${PROJECT_BINARY_DIR}/CMakeFiles/paraview.conf"
     "../${FREPKIT_PARAVIEW_PLUGIN_LINK_DIR}/paraview.plugins.xml\n"
     "../${FREPKIT_PARAVIEW_PLUGIN_LINK_DIR}/frepkit.plugins.xml\n")
-  install(FILES "${PROJECT_BINARY_DIR}/CMakeFiles/paraview.conf" DESTINATION bin)
+  install(CODE "
+    if(\"\${CMAKE_INSTALL_PREFIX}\" STREQUAL \"/usr\" OR ${FREPKIT_INSTALL_DEBIAN_PARAVIEW_LINKS})
+      set(_dir \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${FREPKIT_PARAVIEW_PLUGIN_LINK_DIR}\")
+      file(MAKE_DIRECTORY \"\${_dir}\")
+      foreach(_name IN ITEMS FRepKit frepkit.plugins.xml)
+        message(STATUS \"Installing: \${_dir}/\${_name} -> ${_frepkit_plugin_link_target}/\${_name}\")
+        file(CREATE_LINK \"${_frepkit_plugin_link_target}/\${_name}\" \"\${_dir}/\${_name}\" SYMBOLIC)
+      endforeach()
+      file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/bin\" TYPE FILE
+        FILES \"${PROJECT_BINARY_DIR}/CMakeFiles/paraview.conf\")
+    endif()")
+  unset(_frepkit_plugin_link_target)
 endif()
 
 # --- The CMake package -------------------------------------------------------------------------

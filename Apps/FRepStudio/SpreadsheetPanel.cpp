@@ -2,11 +2,14 @@
 
 #include "Eval/thread_pool.h"
 
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -51,13 +54,13 @@ SpreadsheetPanel::SpreadsheetPanel(QWidget* parent)
   status_row->addWidget(raycast_);
   layout->addLayout(status_row);
 
-  auto* scroll = new QScrollArea(this);
-  grid_widget_ = new QWidget(scroll);
+  scroll_ = new QScrollArea(this);
+  grid_widget_ = new QWidget(scroll_);
   grid_ = new QGridLayout(grid_widget_);
   grid_->setSpacing(2);
-  scroll->setWidget(grid_widget_);
-  scroll->setWidgetResizable(true);
-  layout->addWidget(scroll, 1);
+  scroll_->setWidget(grid_widget_);
+  scroll_->setWidgetResizable(true);
+  layout->addWidget(scroll_, 1);
 
   connect(rows_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
   connect(columns_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { rebuild(); });
@@ -163,6 +166,36 @@ void SpreadsheetPanel::showEvent(QShowEvent* event)
     rebuild();
 }
 
+void SpreadsheetPanel::resizeEvent(QResizeEvent* event)
+{
+  QWidget::resizeEvent(event);
+  fitCells();
+}
+
+void SpreadsheetPanel::fitCells()
+{
+  constexpr int kMinimumCellPixels = 32;
+  constexpr int kFrame = 8; // the button around its picture
+  if (cells_.empty() || cell_columns_ < 1)
+    return;
+  int header = 0;
+  for (int r = 1; r < grid_->rowCount(); ++r)
+  {
+    if (QLayoutItem* item = grid_->itemAtPosition(r, 0); item && item->widget())
+      header = std::max(header, item->widget()->sizeHint().width());
+  }
+  const QMargins margins = grid_->contentsMargins();
+  const int available = scroll_->viewport()->width() - margins.left() - margins.right() - header -
+    grid_->horizontalSpacing() * cell_columns_;
+  const int pixels = std::clamp(available / cell_columns_ - kFrame, kMinimumCellPixels,
+    sheet_.base.pixels);
+  for (QToolButton* button : cells_)
+  {
+    button->setFixedSize(pixels + kFrame, pixels + kFrame);
+    button->setIconSize(QSize(pixels, pixels));
+  }
+}
+
 void SpreadsheetPanel::rebuild()
 {
   const std::uint64_t generation = generation_.fetch_add(1) + 1;
@@ -220,6 +253,8 @@ void SpreadsheetPanel::rebuild()
       requests.push_back(std::move(request));
     }
   }
+  cell_columns_ = columns;
+  fitCells();
   status_->setText(tr("Computing %1 cells...").arg(requests.size()));
 
   // One job for the whole grid, cell by cell in reading order; each finished cell is posted to

@@ -19,6 +19,7 @@ class QCheckBox;
 class QComboBox;
 class QGridLayout;
 class QLabel;
+class QScrollArea;
 class QSpinBox;
 class QToolButton;
 
@@ -65,9 +66,14 @@ signals:
 
 protected:
   void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
 private:
   void rebuild();
+  /// Cells as large as their pictures (CellRequest::pixels) when the width allows, else shrunk
+  /// (down to kMinimumCellPixels) so that every column fits the visible width: the pictures are
+  /// scaled down, not recomputed.
+  void fitCells();
   void updateAxisChoices();
 
   QComboBox* rows_ = nullptr;
@@ -77,7 +83,9 @@ private:
   QLabel* status_ = nullptr;
   QWidget* grid_widget_ = nullptr;
   QGridLayout* grid_ = nullptr;
+  QScrollArea* scroll_ = nullptr;
   std::vector<QToolButton*> cells_;
+  int cell_columns_ = 0; ///< columns of the current grid
   int finished_ = 0;
   bool sameGrid(const Sheet& sheet) const;
 

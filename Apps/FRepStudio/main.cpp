@@ -3,12 +3,16 @@
 //   FRepStudio --screenshot OUT.png MODEL.hf [--set x4=0.3]... [--object NAME] [--size 1280x800]
 //              [--spreadsheet] [--mapping FILE.json] [--high-quality] [--raycast-cells]
 // The screenshot mode shows the window once, waits for the refined section, writes OUT.png and
-// exits (0 ok, 1 error): for tests and the documentation, under xvfb-run on a headless machine.
+// exits (0 ok, 1 error): for tests and the documentation. Without a display (DISPLAY and
+// WAYLAND_DISPLAY unset) --help and --version answer through Qt's offscreen platform, and
+// --screenshot starts itself again under `xvfb-run -a` (the packaged VTK draws through GLX).
 #include "ErrorListWidget.h"
 #include "MappingEditor.h"
 #include "ScreenshotCapture.h"
 #include "SpreadsheetPanel.h"
 #include "StudioMainWindow.h"
+
+#include "picture_size.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -16,9 +20,98 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+
+bool set_in_environment(const char* name)
+{
+  const char* value = std::getenv(name);
+  return value != nullptr && *value != '\0';
+}
+
+/// Whether the command line has one of `names` (also as --name=VALUE).
+bool has_argument(int argc, char* argv[], std::initializer_list<const char*> names)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    for (const char* name : names)
+    {
+      const std::size_t length = std::strlen(name);
+      if (std::strncmp(argv[i], name, length) == 0 &&
+          (argv[i][length] == '\0' || argv[i][length] == '='))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// --screenshot without a display: this program again under `xvfb-run -a`. Returns only when
+/// that is impossible, with the exit code.
+int run_under_xvfb(int argc, char* argv[])
+{
+  const char* const kGuard = "FREPSTUDIO_UNDER_XVFB_RUN";
+  const bool again = set_in_environment(kGuard); // xvfb-run started us and gave no display
+  std::vector<char> self(4096);
+  const ssize_t length = ::readlink("/proc/self/exe", self.data(), self.size() - 1);
+  if (!again && length > 0)
+  {
+    self[static_cast<std::size_t>(length)] = '\0';
+    std::vector<char*> command{ const_cast<char*>("xvfb-run"), const_cast<char*>("-a"),
+      self.data() };
+    command.insert(command.end(), argv + 1, argv + argc);
+    command.push_back(nullptr);
+    ::setenv(kGuard, "1", 1);
+    ::execvp(command[0], command.data());
+  }
+  std::fprintf(stderr,
+    "FRepStudio: --screenshot needs an X display: DISPLAY is unset and xvfb-run %s; run it "
+    "under an X server (e.g. xvfb-run -a FRepStudio --screenshot ...)\n",
+    again ? "gave none" : "cannot be started (is the xvfb package installed?)");
+  return 1;
+}
+
+/// Qt's platform when there is no display: offscreen for --help and --version (they draw
+/// nothing), xvfb-run for --screenshot, a message otherwise (Qt would abort). Returns an exit
+/// code when the program must stop here. A platform the user chose (QT_QPA_PLATFORM) is kept.
+std::optional<int> choose_platform(int argc, char* argv[])
+{
+  if (set_in_environment("DISPLAY") || set_in_environment("WAYLAND_DISPLAY") ||
+      set_in_environment("QT_QPA_PLATFORM"))
+  {
+    return std::nullopt;
+  }
+  if (has_argument(argc, argv, { "-h", "-?", "--help", "--help-all", "-v", "--version" }))
+  {
+    ::setenv("QT_QPA_PLATFORM", "offscreen", 1);
+    return std::nullopt;
+  }
+  if (has_argument(argc, argv, { "--screenshot" }))
+  {
+    return run_under_xvfb(argc, argv);
+  }
+  std::fprintf(stderr,
+    "FRepStudio: no display (DISPLAY and WAYLAND_DISPLAY are unset): start it in a desktop "
+    "session; --help, --version and --screenshot work without one\n");
+  return 1;
+}
+
+} // namespace
 
 int main(int argc, char* argv[])
 {
+  if (const std::optional<int> code = choose_platform(argc, argv))
+  {
+    return *code;
+  }
   // VTK's widget needs its OpenGL format before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
@@ -36,10 +129,10 @@ int main(int argc, char* argv[])
     "NAME=VALUE");
   const QCommandLineOption object("object", "The object to show (default my_model, else the "
                                             "first).", "NAME");
-  const QCommandLineOption size("size", "Window size for the screenshot (default 1280x800).",
-    "WxH", "1280x800");
-  const QCommandLineOption timeout("timeout", "Seconds to wait for the refined section.", "S",
-    "120");
+  const QCommandLineOption size("size",
+    "Window size, WIDTHxHEIGHT or WIDTH,HEIGHT (default 1280x800).", "WxH", "1280x800");
+  const QCommandLineOption timeout("timeout",
+    "Seconds the screenshot waits for the refined section (default 120).", "S", "120");
   const QCommandLineOption spreadsheet("spreadsheet",
     "Show the spreadsheet of cross-sections (the screenshot waits for all its cells).");
   const QCommandLineOption high_quality("high-quality",
@@ -69,14 +162,15 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "FRepStudio: %s\n", qPrintable(inputs_error));
     return 1;
   }
-  const QStringList sizes = parser.value(size).split('x');
-  if (sizes.size() != 2 || sizes[0].toInt() <= 0 || sizes[1].toInt() <= 0)
+  std::string size_error;
+  const std::optional<frepkit::PictureSize> window_size =
+    frepkit::parse_picture_size(parser.value(size).toStdString(), &size_error);
+  if (!window_size)
   {
-    std::fprintf(stderr, "FRepStudio: --size wants WIDTHxHEIGHT, got %s\n",
-      qPrintable(parser.value(size)));
+    std::fprintf(stderr, "FRepStudio: --size: %s\n", size_error.c_str());
     return 1;
   }
-  window.resize(sizes[0].toInt(), sizes[1].toInt());
+  window.resize(window_size->width, window_size->height);
   for (const QString& assignment : parser.values(set))
   {
     const int equals = assignment.indexOf('=');

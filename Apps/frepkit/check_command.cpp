@@ -40,6 +40,10 @@ int run_check(const CheckOptions& options)
   {
     const frep::ast::Object& object = program.objects[i];
     std::cout << (static_cast<int>(i) == selected ? "* " : "  ") << frep::describe_object(object);
+    if (!object.s_declared)
+    {
+      std::cout << "  (s[1] implicit, as in HyperFun: the header declares no s[])";
+    }
     if (static_cast<int>(i) < program.first_own_object)
     {
       std::cout << "  from library " << object.file;

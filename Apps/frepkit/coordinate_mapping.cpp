@@ -39,7 +39,8 @@ std::vector<std::string> split_commas(const std::string& text)
   return parts;
 }
 
-/// "x4" or "x[4]" -> 3 (0-based), else -1.
+} // namespace
+
 int coordinate_index(const std::string& name)
 {
   std::string text = trim(name);
@@ -64,8 +65,6 @@ int coordinate_index(const std::string& name)
   }
   return index - 1;
 }
-
-} // namespace
 
 std::optional<double> parse_number(const std::string& text)
 {

@@ -42,6 +42,9 @@ CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
   const std::vector<std::string>& free,
   int x_dim);
 
+/// "x4" or "x[4]" (spaces around allowed) -> 3, the 0-based index; -1 for anything else.
+int coordinate_index(const std::string& name);
+
 /// A number the whole of `text` spells (no trailing garbage), else nullopt.
 std::optional<double> parse_number(const std::string& text);
 

@@ -127,7 +127,7 @@ int run_demo(const DemoOptions& options)
     MeshOptions mesh;
     mesh.model = (examples / (std::string(shape) + ".hf")).string();
     mesh.output = (out / (std::string(shape) + ".stl")).string();
-    mesh.box = { -10, -10, -10, 10, 10, 10 };
+    mesh.box = { "-10", "-10", "-10", "10", "10", "10" };
     mesh.grid = { options.mesh_grid };
     mesh.threads = options.threads;
     mesh.quiet = true;

@@ -1,6 +1,7 @@
 #include "mesh_command.h"
 
 #include "Compiler/attribute_rgb.h"
+#include "box_option.h"
 #include "coordinate_mapping.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
@@ -39,7 +40,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
   mesh
     ->add_option("--box",
       options.box,
-      "Sampled box xmin,ymin,zmin,xmax,ymax,zmax (default -10..10 on each axis)")
+      "Sampled box: xmin,ymin,zmin,xmax,ymax,zmax (all minima, then all maxima) or a range per "
+      "axis by name, x1=-1:1,x2=-1:1,x3=-1:1 (the coordinates --map puts on X, Y, Z; or "
+      "x=-1:1,y=-1:1,z=-1:1); default -10..10 on each axis")
     ->delimiter(',');
   mesh
     ->add_option("--grid",
@@ -106,7 +109,7 @@ int run_mesh(const MeshOptions& options)
                 << " fixed at 0 (choose with --map, e.g. --map X,Y,Z,0.5)\n";
     }
   }
-  const frep::mesh::Grid grid = make_grid(options.box, options.grid, 3);
+  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), options.grid, 3);
 
   const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;

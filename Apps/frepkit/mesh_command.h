@@ -23,7 +23,7 @@ struct MeshOptions
   std::string output;
   std::optional<std::string> object;
   std::vector<double> parameters;
-  std::vector<double> box;
+  std::vector<std::string> box; ///< --box entries (parse_box)
   std::vector<std::int64_t> grid;
   double iso = 0;
   std::optional<std::string> map;

@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "atomic_output.h"
+#include "box_option.h"
 #include "coordinate_mapping.h"
 #include "interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
@@ -9,6 +10,8 @@
 #include "sampling_grid.h"
 #include "section_writers/png_writer.h"
 #include "user_error.h"
+
+#include "picture_size.h"
 
 #include "Raycast/raycast.h"
 #include "Render/camera.h"
@@ -69,12 +72,12 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
   cmd
     ->add_option("--box",
       options.box,
-      "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax (default -10..10 on each "
-      "axis); the solid is cut by it")
+      "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax, or a range per coordinate "
+      "by name, x1=-1:1,x2=-1:1,x3=-1:1 (or x=,y=,z=); default -10..10 on each axis; the solid is "
+      "cut by it")
     ->delimiter(',');
-  cmd->add_option("--size", options.size, "Picture width,height in pixels (default 800,600)")
-    ->delimiter(',')
-    ->expected(2);
+  cmd->add_option("--size", options.size, "Picture size in pixels: WIDTHxHEIGHT or WIDTH,HEIGHT")
+    ->capture_default_str();
   cmd
     ->add_option("--view",
       options.view,
@@ -107,10 +110,11 @@ int run_render(const RenderOptions& options)
   {
     throw UserError(options.output + ": frepkit render writes .png pictures");
   }
-  if (options.size.size() != 2 || options.size[0] < 1 || options.size[1] < 1 ||
-      options.size[0] > 16384 || options.size[1] > 16384)
+  std::string size_error;
+  const std::optional<PictureSize> size = parse_picture_size(options.size, &size_error);
+  if (!size)
   {
-    throw UserError("--size: width,height from 1 to 16384");
+    throw UserError("--size: " + size_error);
   }
   if (options.view.size() != 2 || !std::isfinite(options.view[0]) ||
       !std::isfinite(options.view[1]))
@@ -129,7 +133,7 @@ int run_render(const RenderOptions& options)
     throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +
                     std::to_string(mapping.free.size()) + " are free)");
   }
-  const frep::mesh::Grid grid = make_grid(options.box, {}, 3);
+  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), {}, 3);
   const std::shared_ptr<const frep::Model> model = loaded.model;
 
   frep::raycast::Shape shape;
@@ -139,7 +143,7 @@ int run_render(const RenderOptions& options)
     shape.box[k] = { grid.lo[k], grid.hi[k] };
   }
   shape.colour = colour;
-  const int width = options.size[0], height = options.size[1];
+  const int width = size->width, height = size->height;
   std::array<double, 3> lo{ grid.lo[0], grid.lo[1], grid.lo[2] };
   std::array<double, 3> hi{ grid.hi[0], grid.hi[1], grid.hi[2] };
 

@@ -28,8 +28,8 @@ struct RenderOptions
   std::vector<double> parameters;
   std::vector<std::string> fix;
   std::vector<std::string> free;
-  std::vector<double> box;                    ///< 6 numbers, default -10..10
-  std::vector<int> size{ 800, 600 };          ///< width, height in pixels
+  std::vector<std::string> box;               ///< --box entries (parse_box), default -10..10
+  std::string size = "800x600";               ///< WIDTHxHEIGHT or WIDTH,HEIGHT in pixels
   std::vector<double> view{ 35.0, 25.0 };     ///< azimuth, elevation in degrees
   std::vector<double> colour{ 0.85, 0.62, 0.38 };    ///< sRGB 0..1
   std::vector<double> background{ 1.0, 1.0, 1.0 }; ///< sRGB 0..1

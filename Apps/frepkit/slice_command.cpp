@@ -2,6 +2,7 @@
 
 #include "Compiler/attribute_rgb.h"
 #include "atomic_output.h"
+#include "box_option.h"
 #include "coordinate_mapping.h"
 #include "mesh_writers/mesh_format.h"
 #include "mesh_writers/vtp_writer.h"
@@ -139,8 +140,9 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
   slice
     ->add_option("--box",
       options.box,
-      "Box over the free coordinates: all minima then all maxima (4 or 6 numbers; default -10..10 "
-      "on each axis)")
+      "Box over the free coordinates: all minima then all maxima (4 or 6 numbers), or a range per "
+      "free coordinate by name, x1=-1:1,x3=-1:1 (or x=,y=,z= in axis order); default -10..10 on "
+      "each axis")
     ->delimiter(',');
   slice
     ->add_option("--grid",
@@ -169,7 +171,7 @@ int run_slice(const SliceOptions& options)
   const int axes = static_cast<int>(mapping.free.size());
   const SliceKind kind = slice_kind(options.output, mapping.free.size());
   require_available(kind, options.output);
-  const frep::mesh::Grid grid = make_grid(options.box, options.grid, axes);
+  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), options.grid, axes);
 
   const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =

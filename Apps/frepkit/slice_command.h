@@ -27,7 +27,7 @@ struct SliceOptions
   std::vector<double> parameters;
   std::vector<std::string> fix;
   std::vector<std::string> free;
-  std::vector<double> box;
+  std::vector<std::string> box; ///< --box entries (parse_box)
   std::vector<std::int64_t> grid;
   double iso = 0;
   bool ascii = false;

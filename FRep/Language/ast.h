@@ -237,6 +237,9 @@ struct Object
   int x_dim = 0;
   int a_dim = 0;     ///< may be 0
   int s_dim = 1;     ///< 1 when the header has no s[..]
+  /// Whether the header declares s[..]; without it the object has s[1] all the same, as in the
+  /// original HyperFun (its interpreter always allocates s[1]).
+  bool s_declared = false;
   std::vector<LocalArray> arrays;
   std::vector<std::string> scalars; ///< lower-case names, in order of first assignment
   Block body;                       ///< statements before the final NAME = expr;

@@ -391,6 +391,7 @@ private:
     }
     else
     {
+      object.s_declared = true;
       expect(TokenKind::Comma, "Comma expected");
       advance();
       expect(TokenKind::S, "\"S\" expected");

@@ -28,6 +28,10 @@ run "unknown option is a usage error" 1 "$frepkit" eval "$sphere" --no-such-opti
 # --- check
 run "check ok" 0 "$frepkit" check "$sphere"
 expect_in "check lists the object" "$out" "my_model(x[3], a[1], s[1])"
+expect_in "check: s[1] without s[] is the original's" "$out" "s[1] implicit, as in HyperFun: the header declares no s[]"
+with_s=$(model with_s.hf 'my_model(x[3], a[1], s[2]) { s[2] = 1; my_model = 1; }')
+run "check with s[2]" 0 "$frepkit" check "$with_s"
+[[ "$out" == *"s[2])"* && "$out" != *"implicit"* ]] && pass "declared s[]: no note" || fail "declared s[]: $out"
 run "check missing file" 1 "$frepkit" check "$work/none.hf"
 expect_in "missing file message" "$err" "cannot open"
 prog="$shared/hyperfun/models/web__paulbourke.net/HF_prog.hf"
@@ -101,6 +105,39 @@ run "eval --hfp-errors" 0 bash -c "printf '2\n0\n4\n' | '$frepkit' eval '$div' -
 [ "$out" = "$(printf '0.5\n0.5\n0.25')" ] && pass "hfp-errors repeats the previous value" || fail "hfp-errors: $out"
 run "eval --interpreter error" 0 bash -c "printf '0\n' | '$frepkit' eval '$div' --interpreter"
 expect_in "interpreter error line" "$out" "Division by zero"
+
+# --- one syntax for boxes and sizes: all minima then all maxima, or a range per axis by name
+ball=$(model ball.hf 'my_model(x[3], a[1]) { my_model = 1 - (x[1]^2 + x[2]^2 + x[3]^2); }')
+run "mesh --box numbers" 0 "$frepkit" mesh "$ball" -o "$work/box_numbers.stl" --box -1.5,-1.5,-1.5,1.5,1.5,1.5 --grid 16 -q
+run "mesh --box by coordinate" 0 "$frepkit" mesh "$ball" -o "$work/box_names.stl" --box x1=-1.5:1.5,x2=-1.5:1.5,x3=-1.5:1.5 --grid 16 -q
+run "mesh --box by axis, any order" 0 "$frepkit" mesh "$ball" -o "$work/box_axes.stl" --box z=-1.5:1.5,y=-1.5:1.5,x=-1.5:1.5 --grid 16 -q
+cmp -s "$work/box_numbers.stl" "$work/box_names.stl" && pass "both box syntaxes: the same mesh" || fail "box syntaxes give different meshes"
+cmp -s "$work/box_numbers.stl" "$work/box_axes.stl" && pass "axis names: the same mesh" || fail "axis names give a different mesh"
+run "slice --box by coordinate" 0 "$frepkit" slice "$ball" -o "$work/box_names.vtp" --fix x2=0 --box x1=-1.5:1.5,x3=-1.5:1.5 --grid 16 -q
+run "slice --box numbers" 0 "$frepkit" slice "$ball" -o "$work/box_numbers.vtp" --fix x2=0 --box -1.5,-1.5,1.5,1.5 --grid 16 -q
+cmp -s "$work/box_numbers.vtp" "$work/box_names.vtp" && pass "slice: both box syntaxes the same" || fail "slice: box syntaxes differ"
+bad_box() { # NAME BOX NEEDLE
+  run "--box $1" 1 "$frepkit" mesh "$ball" -o "$work/bad_box.stl" --box "$2" -q
+  expect_in "--box $1: message" "$err" "$3"
+}
+bad_box "VTK's order" -1.5,1.5,-1.5,1.5,-1.5,1.5 "ymin = 1.5 is not less than ymax = -1.5 (the numbers are xmin,ymin,zmin,xmax,ymax,zmax: all minima, then all maxima; or give ranges by name: x1=LO:HI,x2=LO:HI,x3=LO:HI)"
+bad_box "missing axis" x1=-1:1,x2=-1:1 "--box: no range for x3 (axis z)"
+bad_box "lo >= hi" x1=-1:1,x2=1:-1,x3=-1:1 "--box x2=1:-1: the minimum 1 is not less than the maximum -1"
+bad_box "unknown name" x1=-1:1,q=0:1,x3=-1:1 "unknown axis 'q' (the box's axes are x1, x2, x3, also called x, y, z)"
+bad_box "fixed coordinate" x1=-1:1,x4=0:1,x3=-1:1 "x4 is not a free coordinate"
+bad_box "axis twice" x1=-1:1,x=0:1,x3=-1:1 "x1 is given twice"
+bad_box "no range" x1=-1,x2=-1:1,x3=-1:1 "expected NAME=LO:HI"
+bad_box "mixed" x1=-1:1,1,2 "not both"
+bad_box "not a number" -1,-1,-1,1,1,one "'one' is not a number"
+bad_box "wrong count" -1,-1,1,1 "--box needs 6 numbers"
+if "$frepkit" render --help >/dev/null 2>&1; then
+  run "render --size 64x48" 0 "$frepkit" render "$ball" -o "$work/size_x.png" --box -2,-2,-2,2,2,2 --size 64x48 -q
+  run "render --size 64,48" 0 "$frepkit" render "$ball" -o "$work/size_comma.png" --box -2,-2,-2,2,2,2 --size 64,48 -q
+  cmp -s "$work/size_x.png" "$work/size_comma.png" && pass "both size syntaxes: the same picture" || fail "size syntaxes give different pictures"
+  run "render --size 64y48" 1 "$frepkit" render "$ball" -o "$work/size_bad.png" --size 64y48
+  expect_in "bad --size message" "$err" "--size: expected WIDTHxHEIGHT or WIDTH,HEIGHT (e.g. 640x480 or 640,480)"
+  run "render --size 0x48" 1 "$frepkit" render "$ball" -o "$work/size_bad.png" --size 0x48
+fi
 
 # --- bad input: clear message with a location, exit 1, never a crash
 bad() { # NAME TEXT NEEDLE

@@ -24,6 +24,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QProcess>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSurfaceFormat>
@@ -401,6 +402,16 @@ void TestFRepStudio::spreadsheetCellMovesSliders()
   QCOMPARE(sheet->columnCoordinate(), 0);
   QCOMPARE(sheet->cellCount(), 25);
   QCOMPARE(sheet->finishedCells(), 25);
+  // At 1280 px wide every column is visible: the cells shrink to fit the width (issue 32).
+  window->resize(1280, 800);
+  QApplication::processEvents();
+  const QScrollArea* scroll = sheet->findChild<QScrollArea*>();
+  QVERIFY(scroll);
+  const QToolButton* last = sheet->cell(0, 4);
+  const int right = last->mapTo(scroll->viewport(), QPoint(last->width(), 0)).x();
+  QVERIFY2(right <= scroll->viewport()->width(),
+    qPrintable(QString("the x4 = 1 column ends at %1, the view is %2 wide")
+                 .arg(right).arg(scroll->viewport()->width())));
   // Corners differ (Cat, Robot, NiHon, Rob_let), and no cell is empty.
   const QImage cat = sheet->cell(0, 0)->icon().pixmap(120).toImage();
   const QImage roblet = sheet->cell(4, 4)->icon().pixmap(120).toImage();

@@ -39,7 +39,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
   mesh
     ->add_option("--box",
       options.box,
-      "Sampled box xmin,ymin,zmin,xmax,ymax,zmax (default -10..10 on each axis)")
+      "Sampled box xmin,ymin,zmin,xmax,ymax,zmax (default: the solid's own bounds plus 5%, found "
+      "by interval subdivision; -10..10 on each axis when it is unbounded)")
     ->delimiter(',');
   mesh
     ->add_option("--grid",
@@ -106,13 +107,12 @@ int run_mesh(const MeshOptions& options)
                 << " fixed at 0 (choose with --map, e.g. --map X,Y,Z,0.5)\n";
     }
   }
-  const frep::mesh::Grid grid = make_grid(options.box, options.grid, 3);
-
   const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;
   job.start = start;
   job.tape = model->specialise(mapping.specialisation(options.parameters));
-  job.grid = grid;
+  job.grid =
+    make_grid(box_or_solid_bounds(options.box, job.tape, options.quiet), options.grid, 3);
   job.extract.iso = options.iso;
   job.extract.cap_boundary = !options.no_cap;
   job.extract.refine_steps = options.refine;

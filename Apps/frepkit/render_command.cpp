@@ -69,8 +69,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
   cmd
     ->add_option("--box",
       options.box,
-      "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax (default -10..10 on each "
-      "axis); the solid is cut by it")
+      "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax (default: the solid's own "
+      "bounds plus 5%, -10..10 on each axis when it is unbounded); the solid is cut by it and "
+      "the camera frames it")
     ->delimiter(',');
   cmd->add_option("--size", options.size, "Picture width,height in pixels (default 800,600)")
     ->delimiter(',')
@@ -129,11 +130,13 @@ int run_render(const RenderOptions& options)
     throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +
                     std::to_string(mapping.free.size()) + " are free)");
   }
-  const frep::mesh::Grid grid = make_grid(options.box, {}, 3);
   const std::shared_ptr<const frep::Model> model = loaded.model;
 
   frep::raycast::Shape shape;
   shape.tape = model->specialise(mapping.specialisation(options.parameters));
+  // The camera is fitted to this box: the solid's own bounds frame the solid.
+  const frep::mesh::Grid grid =
+    make_grid(box_or_solid_bounds(options.box, shape.tape, options.quiet), {}, 3);
   for (int k = 0; k < 3; ++k)
   {
     shape.box[k] = { grid.lo[k], grid.hi[k] };

@@ -139,8 +139,8 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
   slice
     ->add_option("--box",
       options.box,
-      "Box over the free coordinates: all minima then all maxima (4 or 6 numbers; default -10..10 "
-      "on each axis)")
+      "Box over the free coordinates: all minima then all maxima (4 or 6 numbers; default: the "
+      "solid's own bounds plus 5%, -10..10 on each axis when it is unbounded)")
     ->delimiter(',');
   slice
     ->add_option("--grid",
@@ -169,11 +169,11 @@ int run_slice(const SliceOptions& options)
   const int axes = static_cast<int>(mapping.free.size());
   const SliceKind kind = slice_kind(options.output, mapping.free.size());
   require_available(kind, options.output);
-  const frep::mesh::Grid grid = make_grid(options.box, options.grid, axes);
-
   const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =
     model->specialise(mapping.specialisation(options.parameters));
+  const frep::mesh::Grid grid =
+    make_grid(box_or_solid_bounds(options.box, tape, options.quiet), options.grid, axes);
   const bool colours = frep::tape_sets_colours(*tape, object.s_dim);
   const bool attributes = frep::tape_sets_attributes(*tape, static_cast<std::size_t>(object.s_dim));
   const std::string fixed = describe_fixed(mapping);

@@ -157,11 +157,17 @@ int run_render(const RenderOptions& options)
     }
     floor = frep::raycast::floor_under(lo, hi);
   }
+  // Fitted to the box's corners when the box is the solid's own (its bounding sphere would
+  // leave a ball less than half the picture); an explicit --box keeps the sphere fit.
+  frep::render::FitOptions fit;
+  fit.fit_corners = options.box.empty();
+  fit.fill = fit.fit_corners ? 1.0 : fit.fill; // exact for the corners; the box has a margin
   const frep::render::Camera camera = frep::render::fit_box(lo,
     hi,
     static_cast<double>(width) / height,
     options.view[0],
-    options.view[1]);
+    options.view[1],
+    fit);
 
   frep::raycast::Style style;
   style.render.supersample = options.supersample;

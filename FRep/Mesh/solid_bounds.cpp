@@ -18,7 +18,9 @@ struct Walk
   IntervalEvaluator interval;
   std::size_t n;
   int max_level;
+  std::size_t budget; // 0: none
   bool found = false;
+  bool gave_up = false;
   std::vector<Interval> box;
   std::size_t evaluations = 0;
 
@@ -56,8 +58,13 @@ struct Walk
 
   void visit(std::vector<Interval>& cell, int level)
   {
-    if (covered(cell))
+    if (gave_up || covered(cell))
     {
+      return;
+    }
+    if (budget > 0 && evaluations >= budget)
+    {
+      gave_up = true;
       return;
     }
     ++evaluations;
@@ -104,7 +111,8 @@ double volume_ratio(const std::vector<Interval>& inner, const std::vector<Interv
 
 SolidBounds solid_bounds_in(const std::shared_ptr<const Tape>& tape,
   std::span<const Interval> box,
-  int depth)
+  int depth,
+  std::size_t budget)
 {
   if (!tape || tape->input_count == 0 || box.size() != tape->input_count || depth < 0 ||
       depth > 30)
@@ -114,11 +122,13 @@ SolidBounds solid_bounds_in(const std::shared_ptr<const Tape>& tape,
   }
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = box.size();
-  Walk walk{ IntervalEvaluator(tape), n, depth * static_cast<int>(n) };
+  Walk walk{ IntervalEvaluator(tape), n, depth * static_cast<int>(n), budget };
   std::vector<Interval> cell(box.begin(), box.end());
   walk.visit(cell, 0);
   SolidBounds result;
-  result.status = walk.found ? SolidBounds::Status::Bounded : SolidBounds::Status::Empty;
+  result.status = walk.gave_up ? SolidBounds::Status::Unbounded
+                : walk.found   ? SolidBounds::Status::Bounded
+                               : SolidBounds::Status::Empty;
   result.box = std::move(walk.box);
   result.interval_evaluations = walk.evaluations;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -136,7 +146,7 @@ SolidBounds find_solid_bounds(const std::shared_ptr<const Tape>& tape,
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = tape ? tape->input_count : 0;
   std::vector<Interval> search(n, Interval{ -options.search, options.search });
-  SolidBounds result = solid_bounds_in(tape, search, options.depth);
+  SolidBounds result = solid_bounds_in(tape, search, options.depth, options.budget);
   std::size_t evaluations = result.interval_evaluations;
   if (result.bounded() && reaches_edge(result.box, options.search))
   {
@@ -145,7 +155,7 @@ SolidBounds find_solid_bounds(const std::shared_ptr<const Tape>& tape,
   // Each pass searches the box the last one found (it encloses the solid) at a finer step.
   for (int pass = 1; pass < options.max_passes && result.bounded(); ++pass)
   {
-    SolidBounds next = solid_bounds_in(tape, result.box, options.depth);
+    SolidBounds next = solid_bounds_in(tape, result.box, options.depth, options.budget);
     evaluations += next.interval_evaluations;
     if (!next.bounded())
     {

@@ -22,7 +22,8 @@ struct SolidBounds
   {
     Bounded,  ///< `box` encloses the solid
     Empty,    ///< F < 0 everywhere in the box searched
-    Unbounded ///< the solid reaches the edge of the search box (e.g. a half-space)
+    Unbounded ///< the solid reaches the edge of the search box (e.g. a half-space), or the
+              ///< search ran out of its budget of interval evaluations (loose enclosures in n-D)
   };
   Status status = Status::Empty;
   std::vector<Interval> box; ///< one interval per tape input; valid when Bounded
@@ -35,9 +36,11 @@ struct SolidBounds
 /// The bounds of {F >= 0} inside `box` (one interval per tape input), to within 1 / 2^depth of
 /// the box on each axis, without a margin. Never Unbounded: the solid may touch `box`.
 /// NaN or infinite enclosures are never culled (a cell is dropped only when F < 0 for sure).
+/// With `budget` > 0, a walk that needs more interval evaluations stops and says Unbounded.
 SolidBounds solid_bounds_in(const std::shared_ptr<const Tape>& tape,
   std::span<const Interval> box,
-  int depth = 5);
+  int depth = 5,
+  std::size_t budget = 0);
 
 struct SolidBoundsOptions
 {
@@ -45,6 +48,9 @@ struct SolidBoundsOptions
   double margin = 0.05;   ///< added on each side, as a fraction of the extent on that axis
   int depth = 5;          ///< levels per axis of each pass (see find_solid_bounds)
   int max_passes = 12;
+  /// Interval evaluations per pass before the search gives up (Unbounded): a solid whose
+  /// enclosures stay loose costs up to 2^(depth n) cells in n dimensions otherwise.
+  std::size_t budget = 200000;
 };
 
 /// The solid's own box: solid_bounds_in over the search box, then again over the box found

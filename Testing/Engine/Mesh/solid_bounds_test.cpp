@@ -124,6 +124,20 @@ TEST(SolidBounds, NaNEnclosuresDoNotCrash)
               b.bounded());
 }
 
+TEST(SolidBounds, ABudgetStopsLooseSearches)
+{
+  // 6-D, and an enclosure that is the whole line near the axes: without a budget, millions of
+  // cells. With it, a quick Unbounded.
+  frep::mesh::SolidBoundsOptions options;
+  options.budget = 20000;
+  const SolidBounds b = frep::mesh::find_solid_bounds(
+    tape_of("l(x[6], a[1]) { l = 1 - sqrt(x[1]^2 + x[2]^2) - x[3]^2 - x[4]^2 - x[5]^2 - x[6]^2; }"),
+    options);
+  EXPECT_EQ(b.status, SolidBounds::Status::Unbounded);
+  EXPECT_LE(b.interval_evaluations, 20000U);
+  EXPECT_LT(b.seconds, 1.0);
+}
+
 TEST(SolidBounds, InABoxTheSolidMayTouchIt)
 {
   const std::vector<frep::Interval> box(3, frep::Interval{ 0.0, 4.0 });

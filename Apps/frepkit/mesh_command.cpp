@@ -42,7 +42,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
       options.box,
       "Sampled box: xmin,ymin,zmin,xmax,ymax,zmax (all minima, then all maxima) or a range per "
       "axis by name, x1=-1:1,x2=-1:1,x3=-1:1 (the coordinates --map puts on X, Y, Z; or "
-      "x=-1:1,y=-1:1,z=-1:1); default -10..10 on each axis")
+      "x=-1:1,y=-1:1,z=-1:1); default: the solid's own bounds plus 5%, found by interval "
+      "subdivision; -10..10 on each axis when it is unbounded")
     ->delimiter(',');
   mesh
     ->add_option("--grid",
@@ -84,7 +85,8 @@ int run_mesh(const MeshOptions& options)
   const MeshFormat format = require_mesh_format(options.output);
   const frep::LoadedModel loaded =
     load_model(options.model, options.user, options.object, options.parameters.size());
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
+  const frep::ast::Object& object =
+    loaded.program->objects[static_cast<std::size_t>(loaded.object)];
 
   CoordinateMapping mapping;
   if (options.map)
@@ -109,13 +111,14 @@ int run_mesh(const MeshOptions& options)
                 << " fixed at 0 (choose with --map, e.g. --map X,Y,Z,0.5)\n";
     }
   }
-  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), options.grid, 3);
-
   const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;
   job.start = start;
   job.tape = model->specialise(mapping.specialisation(options.parameters));
-  job.grid = grid;
+  job.grid =
+    make_grid(box_or_solid_bounds(parse_box(options.box, mapping.free), job.tape, options.quiet),
+      options.grid,
+      3);
   job.extract.iso = options.iso;
   job.extract.cap_boundary = !options.no_cap;
   job.extract.refine_steps = options.refine;

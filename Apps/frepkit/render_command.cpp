@@ -73,8 +73,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
     ->add_option("--box",
       options.box,
       "Box over the free coordinates: xmin,ymin,zmin,xmax,ymax,zmax, or a range per coordinate "
-      "by name, x1=-1:1,x2=-1:1,x3=-1:1 (or x=,y=,z=); default -10..10 on each axis; the solid is "
-      "cut by it")
+      "by name, x1=-1:1,x2=-1:1,x3=-1:1 (or x=,y=,z=); default: the solid's own bounds plus 5%, "
+      "-10..10 on each axis when it is unbounded; the solid is cut by it and the camera frames it")
     ->delimiter(',');
   cmd->add_option("--size", options.size, "Picture size in pixels: WIDTHxHEIGHT or WIDTH,HEIGHT")
     ->capture_default_str();
@@ -84,8 +84,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
       "Camera azimuth,elevation in degrees (default 35,25; azimuth 0 looks along +y)")
     ->delimiter(',')
     ->expected(2);
-  cmd->add_option("--colour", options.colour, "Shape colour r,g,b in 0..1 (sRGB)")
-    ->delimiter(',');
+  cmd->add_option("--colour", options.colour, "Shape colour r,g,b in 0..1 (sRGB)")->delimiter(',');
   cmd->add_option("--background", options.background, "Background r,g,b in 0..1 (sRGB)")
     ->delimiter(',');
   cmd->add_option("--supersample", options.supersample, "Rays per pixel along each axis (1..4)")
@@ -126,18 +125,21 @@ int run_render(const RenderOptions& options)
 
   const frep::LoadedModel loaded =
     load_model(options.model, options.user, options.object, options.parameters.size());
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
+  const frep::ast::Object& object =
+    loaded.program->objects[static_cast<std::size_t>(loaded.object)];
   const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
   if (mapping.free.size() != 3)
   {
     throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +
                     std::to_string(mapping.free.size()) + " are free)");
   }
-  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), {}, 3);
   const std::shared_ptr<const frep::Model> model = loaded.model;
 
   frep::raycast::Shape shape;
   shape.tape = model->specialise(mapping.specialisation(options.parameters));
+  // The camera is fitted to this box: the solid's own bounds frame the solid.
+  const frep::mesh::Grid grid = make_grid(
+    box_or_solid_bounds(parse_box(options.box, mapping.free), shape.tape, options.quiet), {}, 3);
   for (int k = 0; k < 3; ++k)
   {
     shape.box[k] = { grid.lo[k], grid.hi[k] };
@@ -158,11 +160,13 @@ int run_render(const RenderOptions& options)
     }
     floor = frep::raycast::floor_under(lo, hi);
   }
-  const frep::render::Camera camera = frep::render::fit_box(lo,
-    hi,
-    static_cast<double>(width) / height,
-    options.view[0],
-    options.view[1]);
+  // Fitted to the box's corners when the box is the solid's own (its bounding sphere would
+  // leave a ball less than half the picture); an explicit --box keeps the sphere fit.
+  frep::render::FitOptions fit;
+  fit.fit_corners = options.box.empty();
+  fit.fill = fit.fit_corners ? 1.0 : fit.fill; // exact for the corners; the box has a margin
+  const frep::render::Camera camera = frep::render::fit_box(
+    lo, hi, static_cast<double>(width) / height, options.view[0], options.view[1], fit);
 
   frep::raycast::Style style;
   style.render.supersample = options.supersample;

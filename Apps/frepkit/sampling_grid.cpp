@@ -1,12 +1,60 @@
 #include "sampling_grid.h"
 
+#include "Mesh/solid_bounds.h"
 #include "number_format.h"
 #include "user_error.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace frepkit
 {
+
+std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
+  const std::shared_ptr<const frep::Tape>& tape,
+  bool quiet)
+{
+  if (!box.empty() || !tape || tape->input_count == 0)
+  {
+    return box;
+  }
+  const frep::mesh::SolidBounds bounds = frep::mesh::find_solid_bounds(tape);
+  if (!bounds.bounded())
+  {
+    std::cerr << "frepkit: warning: "
+              << (bounds.status == frep::mesh::SolidBounds::Status::Empty
+                     ? "the solid is empty in [-1000, 1000]"
+                     : "the solid reaches the edge of [-1000, 1000] (unbounded, or its intervals "
+                       "are too loose to tell)")
+              << "; using -10..10 on each axis (choose with --box)\n";
+    return {};
+  }
+  std::vector<double> result(2 * bounds.box.size());
+  std::string text;
+  for (std::size_t k = 0; k < bounds.box.size(); ++k)
+  {
+    // Rounded outwards to about 3 significant digits of the extent: a box one can retype.
+    const double extent = bounds.box[k].hi - bounds.box[k].lo;
+    // (n / 10^d rather than n * 10^-d: the shortest form of the result is then short.)
+    const double e = std::floor(std::log10(extent)) - 2.0;
+    const double scale = std::pow(10.0, std::abs(e));
+    const auto round = [e, scale](double v, bool up)
+    {
+      const double n = up ? std::ceil(e < 0 ? v * scale : v / scale)
+                          : std::floor(e < 0 ? v * scale : v / scale);
+      return e < 0 ? n / scale : n * scale;
+    };
+    result[k] = round(bounds.box[k].lo, false);
+    result[k + bounds.box.size()] = round(bounds.box[k].hi, true);
+    text += std::string(k == 0 ? "" : " x ") + "[" + format_short(result[k]) + ", " +
+            format_short(result[k + bounds.box.size()]) + "]";
+  }
+  if (!quiet)
+  {
+    std::cerr << "frepkit: box " << text << " (the solid's bounds; --box to choose)\n";
+  }
+  return result;
+}
 
 frep::mesh::Grid make_grid(const std::vector<double>& box,
   const std::vector<std::int64_t>& grid,

@@ -141,8 +141,8 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
     ->add_option("--box",
       options.box,
       "Box over the free coordinates: all minima then all maxima (4 or 6 numbers), or a range per "
-      "free coordinate by name, x1=-1:1,x3=-1:1 (or x=,y=,z= in axis order); default -10..10 on "
-      "each axis")
+      "free coordinate by name, x1=-1:1,x3=-1:1 (or x=,y=,z= in axis order); default: the "
+      "solid's own bounds plus 5%, -10..10 on each axis when it is unbounded")
     ->delimiter(',');
   slice
     ->add_option("--grid",
@@ -166,16 +166,19 @@ int run_slice(const SliceOptions& options)
   const auto start = std::chrono::steady_clock::now();
   const frep::LoadedModel loaded =
     load_model(options.model, options.user, options.object, options.parameters.size());
-  const frep::ast::Object& object = loaded.program->objects[static_cast<std::size_t>(loaded.object)];
+  const frep::ast::Object& object =
+    loaded.program->objects[static_cast<std::size_t>(loaded.object)];
   const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
   const int axes = static_cast<int>(mapping.free.size());
   const SliceKind kind = slice_kind(options.output, mapping.free.size());
   require_available(kind, options.output);
-  const frep::mesh::Grid grid = make_grid(parse_box(options.box, mapping.free), options.grid, axes);
-
   const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =
     model->specialise(mapping.specialisation(options.parameters));
+  const frep::mesh::Grid grid =
+    make_grid(box_or_solid_bounds(parse_box(options.box, mapping.free), tape, options.quiet),
+      options.grid,
+      axes);
   const bool colours = frep::tape_sets_colours(*tape, object.s_dim);
   const bool attributes = frep::tape_sets_attributes(*tape, static_cast<std::size_t>(object.s_dim));
   const std::string fixed = describe_fixed(mapping);

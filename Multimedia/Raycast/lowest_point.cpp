@@ -3,7 +3,7 @@
 // search, the same caps where the box cuts the solid.
 #include "Raycast/raycast.h"
 
-#include "Raycast/solid_bounds.h"
+#include "Mesh/solid_bounds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,8 +69,8 @@ std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
   {
     return std::nullopt;
   }
-  const detail::SolidBounds bounds = detail::solid_bounds(shape.tape, shape.box, 4);
-  if (bounds.empty)
+  const mesh::SolidBounds bounds = mesh::solid_bounds_in(shape.tape, shape.box, 4);
+  if (!bounds.bounded())
   {
     return std::nullopt;
   }

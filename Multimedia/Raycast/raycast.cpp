@@ -2,7 +2,7 @@
 
 #include "Raycast/piece_tracer.h"
 #include "Raycast/shadow_map.h"
-#include "Raycast/solid_bounds.h"
+#include "Mesh/solid_bounds.h"
 #include "Raycast/surface_shading.h"
 #include "Raycast/view_rays.h"
 
@@ -583,13 +583,14 @@ Result render(render::Image& target,
     c.floor_index.emplace(*floor);
   }
   ThreadPool pool(style.render.threads);
-  const detail::SolidBounds bounds = detail::solid_bounds(shape.tape, shape.box, 4);
+  // Rays clip to the solid's bounds in the box (Mesh/solid_bounds.h, to 1/16 of the box).
+  const mesh::SolidBounds bounds = mesh::solid_bounds_in(shape.tape, shape.box, 4);
   result.statistics.interval_evaluations += bounds.interval_evaluations;
   // With nothing inside the box, rays search an empty box outside it (none enters).
-  const std::array<Interval, 3> clip = bounds.empty
-    ? std::array<Interval, 3>{ Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 } }
-    : bounds.box;
-  if (!bounds.empty && !c.kit.lights.empty() && ((floor && floor->shadows) || style.self_shadows))
+  const std::array<Interval, 3> clip = bounds.bounded()
+    ? std::array<Interval, 3>{ bounds.box[0], bounds.box[1], bounds.box[2] }
+    : std::array<Interval, 3>{ Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 }, Interval{ 1.0, 0.0 } };
+  if (bounds.bounded() && !c.kit.lights.empty() && ((floor && floor->shadows) || style.self_shadows))
   {
     // Half a picture's side over the shape's bounding sphere (the look-up is bilinear): the map
     // is a picture of its own, traced like the camera's, and costs as much per sample.

@@ -17,7 +17,7 @@ class ShadowMap
 {
 public:
   /// The shape's box seen along -towards_light, `size` samples square.
-  /// The solid inside `clip` (see solid_bounds.h) seen along -towards_light.
+  /// The solid inside `clip` (see Mesh/solid_bounds.h) seen along -towards_light.
   ShadowMap(const Shape& shape, const std::array<Interval, 3>& clip, const Affine3& map,
     const Vec3& towards_light, int size, ThreadPool& pool, Statistics& statistics);
 

@@ -1,6 +1,7 @@
 #include "Render/camera.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -86,6 +87,17 @@ Camera fit_box(const Vec3& lo,
   // stays orthonormal at the poles, where z itself would be parallel to the view.
   const Vec3 out{ std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el) };
   const Vec3 up{ -std::sin(az) * std::sin(el), std::cos(az) * std::sin(el), std::cos(el) };
+  // The corners' depths towards the eye and distances from the view axis (fit_corners).
+  std::array<double, 8> along{}, across{};
+  for (int c = 0; options.fit_corners && c < 8; ++c)
+  {
+    const Vec3 d{ (c & 1 ? half[0] : -half[0]), (c & 2 ? half[1] : -half[1]),
+      (c & 4 ? half[2] : -half[2]) };
+    along[c] = dot(d, out);
+    across[c] = std::sqrt(std::max(dot(d, d) - along[c] * along[c], 0.0));
+  }
+  const double widest = *std::max_element(across.begin(), across.end());
+  const bool corners = options.fit_corners && widest > 0.0 && std::isfinite(widest);
 
   Camera camera;
   camera.focal_point = centre;
@@ -96,7 +108,7 @@ Camera fit_box(const Vec3& lo,
   if (options.orthographic)
   {
     // The sphere's radius is fill/2 of the shorter side: of the height when aspect >= 1.
-    camera.parallel_scale = radius / (fill * std::min(1.0, aspect));
+    camera.parallel_scale = (corners ? widest : radius) / (fill * std::min(1.0, aspect));
     distance = 4.0 * radius;
   }
   else
@@ -107,6 +119,13 @@ Camera fit_box(const Vec3& lo,
     const double tan_half = std::tan(0.5 * camera.view_angle_deg * kDegree);
     const double target = fill * std::min(1.0, aspect) * tan_half; // tan of the outline angle
     distance = radius * std::sqrt(1.0 + 1.0 / (target * target));
+    // Each corner, `along` nearer the eye, is seen within the outline angle when
+    // across / (distance - along) <= target: the box's picture (the hull of the corners') too.
+    for (int c = 0; corners && c < 8; ++c)
+    {
+      distance = c == 0 ? 0.0 : distance;
+      distance = std::max(distance, along[c] + across[c] / target);
+    }
   }
   camera.position = {
     centre[0] + distance * out[0], centre[1] + distance * out[1], centre[2] + distance * out[2]

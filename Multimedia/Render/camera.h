@@ -43,6 +43,11 @@ struct FitOptions
   bool orthographic = false;
   /// The bounding sphere's diameter as a fraction of the picture's shorter side.
   double fill = 0.9;
+  /// Fit the box's corners as seen from the view direction instead of its bounding sphere: the
+  /// sphere about their farthest distance from the view axis, the camera moved back by their
+  /// largest depth towards it (so no corner leaves the picture). Tighter for boxes fitted to a
+  /// solid, where the box's sphere leaves a round shape less than half the picture.
+  bool fit_corners = false;
 };
 
 /// A camera looking at the centre of the box [lo, hi] from the direction (azimuth, elevation),

@@ -46,13 +46,27 @@ expect_in "mesh help documents --grid" "$out" "--grid"
 run "mesh to binary STL" 0 "$frepkit" mesh "$sphere" -o sphere.stl --grid 64
 expect_in "mesh report has the triangle count" "$out" "triangles,"
 expect_in "mesh report has the statistics" "$out" "culled; samples"
-expect_in "mesh report states the grid" "$out" "64 x 64 x 64 samples over [-10, 10] x [-10, 10] x [-10, 10]"
+# No --box: the solid's own bounds (radius 5, plus 5% of its extent, rounded outwards).
+expect_in "mesh says the box is the solid's bounds" "$err" "(the solid's bounds; --box to choose)"
+expect_in "mesh report states the grid" "$out" "64 x 64 x 64 samples over [-5.6, 5.6] x [-5.6, 5.6] x [-5.6, 5.6]"
 triangles=$(echo "$out" | sed -n 's/.*: \([0-9]*\) triangles,.*/\1/p' | head -1)
 size=$(stat -c %s sphere.stl)
 [ -n "$triangles" ] && [ "$size" -eq $((84 + 50 * triangles)) ] && pass "binary STL size is 84 + 50 n" || fail "binary STL size $size for $triangles triangles"
 run "binary STL is closed and oriented" 0 "$check" sphere.stl --closed
 expect_true "binary STL triangle count" [ "$(field triangles "$out")" = "$triangles" ]
 expect_true "sphere volume within 2%" near "$(field volume "$out")" $sphere_volume 0.02
+
+run "mesh with an explicit --box" 0 "$frepkit" mesh "$sphere" -o boxed.stl --grid 64 --box -10,-10,-10,10,10,10
+expect_in "an explicit --box wins" "$out" "64 x 64 x 64 samples over [-10, 10] x [-10, 10] x [-10, 10]"
+[ "${out#*solid\'s bounds}" = "$out" ] && pass "no bounds line with --box" || fail "bounds line with --box: $out"
+halfspace=$(model half.hf 'my_model(x[3], a[1]) { my_model = 1 - x[3]; }')
+run "mesh of a half-space" 0 "$frepkit" mesh "$halfspace" -o half.stl --grid 16
+expect_in "a half-space is unbounded: warned, -10..10" "$err" "using -10..10 on each axis (choose with --box)"
+expect_in "a half-space falls back to -10..10" "$out" "16 x 16 x 16 samples over [-10, 10] x [-10, 10] x [-10, 10]"
+# A unit 4-D ball at x4 = 0 in its own box: thousands of triangles, not the few hundred of -10..10.
+ball4=$(model ball4.hf 'my_model(x[4], a[1]) { my_model = 1 - x[1]^2 - x[2]^2 - x[3]^2 - x[4]^2; }')
+run "mesh of a unit 4-D ball" 0 "$frepkit" mesh "$ball4" -o ball4.stl
+expect_true "a unit 4-D ball fills its own box" [ "$(echo "$out" | sed -n 's/.*: \([0-9]*\) triangles,.*/\1/p' | head -1)" -gt 10000 ]
 
 run "mesh to ASCII STL" 0 "$frepkit" mesh "$sphere" -o ascii.stl --grid 64 --ascii -q
 [ -z "$out" ] && pass "--quiet prints no report" || fail "--quiet printed: $out"

@@ -24,23 +24,27 @@ py=/usr/bin/python3
 cat >pixel.py <<'PY'
 import struct, sys, zlib
 data = open(sys.argv[1], 'rb').read()
-pos, idat, w, h = 8, b'', 0, 0
+pos, idat, w, h, kind_of_colour, palette = 8, b'', 0, 0, 2, b''
 while pos < len(data):
     n, kind = struct.unpack('>I4s', data[pos:pos + 8])
     body = data[pos + 8:pos + 8 + n]
     if kind == b'IHDR':
         w, h = struct.unpack('>II', body[:8])
+        kind_of_colour = body[9]
+    elif kind == b'PLTE':
+        palette = body
     elif kind == b'IDAT':
         idat += body
     pos += 12 + n
 raw = zlib.decompress(idat)
-stride, rows, prev = 3 * w, [], bytearray(3 * w)
+bpp = 1 if kind_of_colour == 3 else 3  # frepkit writes 8-bit RGB, slice's pictures a palette
+stride, rows, prev = bpp * w, [], bytearray(bpp * w)
 for y in range(h):
     f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
     for i in range(stride):
-        a = line[i - 3] if i >= 3 else 0
+        a = line[i - bpp] if i >= bpp else 0
         b = prev[i]
-        c = prev[i - 3] if i >= 3 else 0
+        c = prev[i - bpp] if i >= bpp else 0
         if f == 1: line[i] = (line[i] + a) & 255
         elif f == 2: line[i] = (line[i] + b) & 255
         elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
@@ -48,8 +52,17 @@ for y in range(h):
             p = a + b - c
             pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
             line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-    rows.append(line)
     prev = line
+    rows.append(line if bpp == 3 else bytearray(b''.join(palette[3 * v:3 * v + 3] for v in line)))
+if sys.argv[2] == 'bbox':  # the box of the pixels unlike the top-left one: "width height w h"
+    bg, xs, ys = rows[0][0:3], [], []
+    for y in range(h):
+        for x in range(w):
+            if max(abs(rows[y][3 * x + k] - bg[k]) for k in range(3)) > 8:
+                xs.append(x)
+                ys.append(y)
+    print(w, h, max(xs) - min(xs) + 1 if xs else 0, max(ys) - min(ys) + 1 if ys else 0)
+    sys.exit(0)
 x, y = int(sys.argv[2]), int(sys.argv[3])
 print(*rows[y][3 * x:3 * x + 3])
 PY
@@ -71,6 +84,22 @@ if below "$(field differing_fraction "$line")" 0.01; then pass "ball against its
 run "1 and 2 threads: same picture" 0 "$frepkit" render ball.hf -o ball1.png --box -2,-2,-2,2,2,2 --size 160,120 -j1 --floor
 run "floor" 0 "$frepkit" render ball.hf -o ball2.png --box -2,-2,-2,2,2,2 --size 160,120 -j2 --floor
 if cmp -s ball1.png ball2.png; then pass "floor pictures identical for 1 and 2 threads"; else fail "pictures differ between 1 and 2 threads"; fi
+
+# Framing: without --box the solid's own bounds are the box, so the picture frames the solid
+# (the -10..10 default left a unit ball a few pixels wide): what is not background spans at least
+# half the picture's width or height, with the floor too.
+frames() { # NAME PNG
+  read -r w h bw bh < <(pixel "$2" bbox)
+  if [ $((2 * bw)) -ge "$w" ] || [ $((2 * bh)) -ge "$h" ]; then pass "$1 ($bw x $bh of $w x $h)"; else fail "$1: $bw x $bh of $w x $h"; fi
+}
+run "render a ball without --box" 0 "$frepkit" render ball.hf -o framed.png --size 160,120
+expect_in "render names the solid's box" "$err" "(the solid's bounds; --box to choose)"
+frames "render frames the ball" framed.png
+run "render a ball on the floor without --box" 0 "$frepkit" render ball.hf -o framed_floor.png --size 160,120 --floor
+frames "render frames the ball and its floor" framed_floor.png
+printf '%s\n' 'my_model(x[2], a[1]) { my_model = 0.04 - x[1] * x[1] - x[2] * x[2]; }' >small_disc.hf
+run "slice a small disc without --box" 0 "$frepkit" slice small_disc.hf -o small_disc.png
+frames "slice frames the disc" small_disc.png
 
 run "bad --view refused" 1 "$frepkit" render ball.hf -o x.png --view 10,nan
 expect_in "bad --view named" "$err" "--view"

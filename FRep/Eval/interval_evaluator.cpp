@@ -89,7 +89,12 @@ HOT_RULE Range rounded(double lo, double hi, bool nan)
   {
     return whole(true);
   }
-  return { { down(lo), up(hi) }, nan };
+  // An endpoint that is exactly zero stays zero: the operations rounded here are correctly
+  // rounded and monotone, so the computed endpoint already bounds every computed value, and the
+  // ulp of margin would otherwise make a sum of squares possibly negative (sqrt(x^2 + y^2) over
+  // a box touching an axis became the whole line, and frep::mesh::find_solid_bounds found
+  // hfTorusZ unbounded).
+  return { { lo == 0.0 ? lo : down(lo), hi == 0.0 ? hi : up(hi) }, nan };
 }
 
 /// [lo, hi] of a libm result: relative margin of 4 DBL_EPSILON (several ulps) plus one ulp.

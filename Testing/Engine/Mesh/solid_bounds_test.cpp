@@ -52,9 +52,8 @@ TEST(SolidBounds, UnitBallGetsOnePlusTheMargin)
 TEST(SolidBounds, OffCentreTorus)
 {
   // Major radius 3, minor 1, centred at (5, 0, -2): x in [1, 9], y in [-4, 4], z in [-3, -1].
-  // As a quartic: the enclosures of hfTorusZ and of sqrt(...) forms are the whole line here
-  // (the search then reports Unbounded and callers fall back). The quartic's are loose near the
-  // surface (the dependency problem), hence more slack.
+  // As a quartic (hfTorusZ below): its enclosures are loose near the surface (the dependency
+  // problem), hence more slack.
   const SolidBounds b = frep::mesh::find_solid_bounds(tape_of(
     "t(x[3], a[1]) { p = (x[1] - 5)^2 + x[2]^2; q = p + (x[3] + 2)^2 + 8; t = 36 * p - q^2; }"));
   expect_box(b, 0, 1.0, 9.0, 0.25);
@@ -126,16 +125,41 @@ TEST(SolidBounds, NaNEnclosuresDoNotCrash)
 
 TEST(SolidBounds, ABudgetStopsLooseSearches)
 {
-  // 6-D, and an enclosure that is the whole line near the axes: without a budget, millions of
-  // cells. With it, a quick Unbounded.
+  // A search that needs more interval evaluations than its budget stops there and says
+  // Unbounded (the callers then fall back): a 6-D ball needs a few thousand, allowed 100.
+  const auto ball =
+    tape_of("l(x[6], a[1]) { l = 1 - x[1]^2 - x[2]^2 - x[3]^2 - x[4]^2 - x[5]^2 - x[6]^2; }");
   frep::mesh::SolidBoundsOptions options;
-  options.budget = 20000;
-  const SolidBounds b = frep::mesh::find_solid_bounds(
-    tape_of("l(x[6], a[1]) { l = 1 - sqrt(x[1]^2 + x[2]^2) - x[3]^2 - x[4]^2 - x[5]^2 - x[6]^2; }"),
-    options);
-  EXPECT_EQ(b.status, SolidBounds::Status::Unbounded);
-  EXPECT_LE(b.interval_evaluations, 20000U);
-  EXPECT_LT(b.seconds, 1.0);
+  options.budget = 100;
+  const SolidBounds stopped = frep::mesh::find_solid_bounds(ball, options);
+  EXPECT_EQ(stopped.status, SolidBounds::Status::Unbounded);
+  EXPECT_EQ(stopped.interval_evaluations, 100U);
+  const SolidBounds found = frep::mesh::find_solid_bounds(ball);
+  ASSERT_TRUE(found.bounded());
+  EXPECT_GT(found.interval_evaluations, 100U);
+  EXPECT_LT(found.seconds, 1.0);
+}
+
+TEST(SolidBounds, SquareRootsOfSumsOfSquaresAreBounded)
+{
+  // sqrt(x^2 + y^2) over a cell touching an axis: the sum's lower bound is exactly 0 and stays
+  // 0 (it was pushed an ulp below 0, and the square root of a possibly negative number was the
+  // whole line, so these were Unbounded). A capped cylinder, a 6-D one, and hfTorusZ.
+  const SolidBounds capped =
+    frep::mesh::find_solid_bounds(tape_of("c(x[3], a[1]) { c = 1 - sqrt(x[1]^2 + x[2]^2) - x[3]^2; }"));
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    expect_box(capped, k, -1.0, 1.0);
+  }
+  const SolidBounds six = frep::mesh::find_solid_bounds(
+    tape_of("l(x[6], a[1]) { l = 1 - sqrt(x[1]^2 + x[2]^2) - x[3]^2 - x[4]^2 - x[5]^2 - x[6]^2; }"));
+  ASSERT_TRUE(six.bounded());
+  EXPECT_LT(six.seconds, 1.0);
+  const SolidBounds torus = frep::mesh::find_solid_bounds(tape_of(
+    "t(x[3], a[1]) { array c[3]; c = [5, 0, -2]; t = hfTorusZ(x, c, 3, 1); }"));
+  expect_box(torus, 0, 1.0, 9.0, 0.25);
+  expect_box(torus, 1, -4.0, 4.0, 0.25);
+  expect_box(torus, 2, -3.0, -1.0, 0.6);
 }
 
 TEST(SolidBounds, InABoxTheSolidMayTouchIt)

@@ -18,14 +18,17 @@ std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
   {
     return box;
   }
-  const frep::mesh::SolidBounds bounds = frep::mesh::find_solid_bounds(tape);
+  const frep::mesh::SolidBoundsOptions options;
+  const frep::mesh::SolidBounds bounds = frep::mesh::find_solid_bounds(tape, options);
   if (!bounds.bounded())
   {
+    const std::string search =
+      "[-" + format_short(options.search) + ", " + format_short(options.search) + "]";
     std::cerr << "frepkit: warning: "
               << (bounds.status == frep::mesh::SolidBounds::Status::Empty
-                     ? "the solid is empty in [-1000, 1000]"
-                     : "the solid reaches the edge of [-1000, 1000] (unbounded, or its intervals "
-                       "are too loose to tell)")
+                     ? "the solid is empty in " + search
+                     : "the solid reaches the edge of " + search +
+                         " (unbounded, or its intervals are too loose to tell)")
               << "; using -10..10 on each axis (choose with --box)\n";
     return {};
   }
@@ -40,8 +43,8 @@ std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
     const double scale = std::pow(10.0, std::abs(e));
     const auto round = [e, scale](double v, bool up)
     {
-      const double n = up ? std::ceil(e < 0 ? v * scale : v / scale)
-                          : std::floor(e < 0 ? v * scale : v / scale);
+      const double n =
+        up ? std::ceil(e < 0 ? v * scale : v / scale) : std::floor(e < 0 ? v * scale : v / scale);
       return e < 0 ? n / scale : n * scale;
     };
     result[k] = round(bounds.box[k].lo, false);

@@ -11,6 +11,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "Compiler/load_model.h"
+#include "Mesh/coordinate_bounds.h"
 
 #include <fstream>
 #include <sstream>
@@ -113,6 +114,15 @@ void vtkHyperFunSource::GetCoordinateRange(int i, double range[2]) const
     range[1] = this->CoordinateRanges[index][1];
     return;
   }
+  // The solid's bounds only while they are those of the source as it is now.
+  // (GetMTime is not const in VTK; it only reads.)
+  if (i >= 0 && index < this->FoundRanges.size() &&
+      this->ModelTime.GetMTime() > const_cast<vtkHyperFunSource*>(this)->GetMTime())
+  {
+    range[0] = this->FoundRanges[index][0];
+    range[1] = this->FoundRanges[index][1];
+    return;
+  }
   range[0] = this->DefaultCoordinateRange[0];
   range[1] = this->DefaultCoordinateRange[1];
 }
@@ -198,14 +208,63 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::UpdateModel()
   {
     return this->CachedModel; // built since the last change (null: reported then)
   }
+  this->FoundRanges.clear();
   this->BuildModel();
+  if (this->CachedModel)
+  {
+    this->UpdateRanges(*this->CachedModel);
+  }
   this->ModelTime.Modified();
   return this->CachedModel;
 }
 
 //------------------------------------------------------------------------------
-void vtkHyperFunSource::FillObject(
-  const std::shared_ptr<const frep::Model>& model, vtkFRepObject* output) const
+void vtkHyperFunSource::UpdateRanges(const frep::Model& model)
+{
+  const int n = model.x_dim();
+  std::vector<std::optional<frep::Interval>> given(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+  {
+    double range[2];
+    this->GetCoordinateRange(i, range);
+    const std::size_t index = static_cast<std::size_t>(i);
+    if (!this->UseSolidBounds ||
+        (index < this->HasCoordinateRange.size() && this->HasCoordinateRange[index]))
+    {
+      given[index] = frep::Interval{ range[0], range[1] };
+    }
+  }
+  const frep::Interval fallback{ this->DefaultCoordinateRange[0], this->DefaultCoordinateRange[1] };
+  if (!(fallback.lo < fallback.hi))
+  {
+    return; // FillObject's ranges say it: DefaultCoordinateRange is used as set
+  }
+  try
+  {
+    const frep::mesh::CoordinateBounds bounds =
+      frep::mesh::find_coordinate_bounds(model, this->Parameters, given, fallback);
+    for (const frep::Interval& range : bounds.ranges)
+    {
+      this->FoundRanges.push_back({ range.lo, range.hi });
+    }
+    if (bounds.rule == frep::mesh::CoordinateBounds::Rule::None && !bounds.note.empty() &&
+        this->WarnedModel.lock() != this->CachedModel)
+    {
+      this->WarnedModel = this->CachedModel;
+      vtkWarningMacro(<< model.name() << ": " << bounds.note
+                      << "; the coordinates without a range get DefaultCoordinateRange ["
+                      << fallback.lo << ", " << fallback.hi << "] (SetCoordinateRange to choose)");
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< model.name() << ": the solid's bounds: " << e.what());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHyperFunSource::FillObject(const std::shared_ptr<const frep::Model>& model,
+  vtkFRepObject* output) const
 {
   output->SetModel(model);
   for (int i = 0; i < model->x_dim(); ++i)
@@ -358,6 +417,7 @@ void vtkHyperFunSource::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << a;
   }
   os << "\n";
+  os << indent << "UseSolidBounds: " << (this->UseSolidBounds ? "On" : "Off") << "\n";
   os << indent << "DefaultCoordinateRange: [" << this->DefaultCoordinateRange[0] << ", "
      << this->DefaultCoordinateRange[1] << "]\n";
   os << indent << "CoordinateRanges:";

@@ -12,8 +12,13 @@
  * objects.
  *
  * Parameters are the a[] values a[1..] (missing ones are 0). Coordinate ranges set the interval
- * of each coordinate of the output (SetCoordinateRange, 0-based); coordinates without one get
- * DefaultCoordinateRange, [-10, 10] like hfp's default box.
+ * of each coordinate of the output (SetCoordinateRange, 0-based). Coordinates without one get the
+ * solid's own bounds (UseSolidBounds, on by default; frep::mesh::find_coordinate_bounds: the n-D
+ * solid's bounds when it is bounded, else x1..x3 cover the sections at the centre and corners of
+ * x4..'s intervals, with 5% margin), so that a unit ball is sampled over about [-1.1, 1.1], not
+ * hfp's [-10, 10]. Where the solid cannot be bounded (a half-space; enclosures too loose), or
+ * with UseSolidBounds off, they get DefaultCoordinateRange, [-10, 10] like hfp's default box, and
+ * a warning says why (once per model: not again when only a[] or the ranges change).
  *
  * Errors: every diagnostic of the parser and the compiler is reported through its own
  * vtkErrorMacro as "file:line:col: error: message" ("<string>" is the file name of ModelText),
@@ -105,8 +110,10 @@ public:
   ///@{
   /**
    * Interval [lo, hi] of coordinate i (0-based: x[i + 1]) in the output. Coordinates without
-   * an interval of their own get DefaultCoordinateRange. lo > hi is an error.
-   * GetCoordinateRange gives the interval coordinate i will get.
+   * an interval of their own get the solid's bounds (UseSolidBounds) or DefaultCoordinateRange.
+   * lo > hi is an error. GetCoordinateRange gives the interval coordinate i gets: after the
+   * source has updated its information (UpdateInformation), the solid's bounds where they were
+   * used; before, the interval set or DefaultCoordinateRange.
    */
   void SetCoordinateRange(int i, double lo, double hi);
   void GetCoordinateRange(int i, double range[2]) const;
@@ -119,6 +126,16 @@ public:
    */
   vtkSetVector2Macro(DefaultCoordinateRange, double);
   vtkGetVector2Macro(DefaultCoordinateRange, double);
+  ///@}
+
+  ///@{
+  /**
+   * Give coordinates without an interval of their own the solid's bounds (default on; see the
+   * class description). Off: DefaultCoordinateRange, as hfp and FRepKit before 0.2 did.
+   */
+  vtkSetMacro(UseSolidBounds, vtkTypeBool);
+  vtkGetMacro(UseSolidBounds, vtkTypeBool);
+  vtkBooleanMacro(UseSolidBounds, vtkTypeBool);
   ///@}
 
   ///@{
@@ -141,8 +158,8 @@ public:
 
 protected:
   /**
-   * Defaults: no ModelText, FileName or ObjectName, no parameters, DefaultCoordinateRange
-   * [-10, 10]; no input port, one output port (vtkFRepObject).
+   * Defaults: no ModelText, FileName or ObjectName, no parameters, UseSolidBounds on,
+   * DefaultCoordinateRange [-10, 10]; no input port, one output port (vtkFRepObject).
    */
   vtkHyperFunSource();
   ~vtkHyperFunSource() override;
@@ -166,6 +183,7 @@ protected:
   char* FileName = nullptr;
   char* ObjectName = nullptr;
   double DefaultCoordinateRange[2] = { -10.0, 10.0 };
+  vtkTypeBool UseSolidBounds = 1;
   std::vector<double> Parameters;
   // Per coordinate: has an interval of its own, and the interval.
   std::vector<bool> HasCoordinateRange;
@@ -180,6 +198,9 @@ private:
 
   // Reads, parses and compiles (or reuses the cached model); reports every diagnostic.
   std::shared_ptr<const frep::Model> BuildModel();
+  // The interval of every coordinate of `model` (UseSolidBounds), into FoundRanges; warns once
+  // when the solid cannot be bounded.
+  void UpdateRanges(const frep::Model& model);
   // Fills `output` with the model, the coordinate intervals and a[].
   void FillObject(const std::shared_ptr<const frep::Model>& model, vtkFRepObject* output) const;
 
@@ -192,6 +213,10 @@ private:
   std::string CachedObjectName;
   vtkTimeStamp UserFunctionTime; // AddShape/AddUserLibrary: the cache is stale
   vtkTimeStamp CachedTime;
+  // The intervals UpdateRanges chose for the current model (empty: none yet).
+  std::vector<std::array<double, 2>> FoundRanges;
+  // The model the unbounded-solid warning was given for: once per model, not per parameter.
+  std::weak_ptr<const frep::Model> WarnedModel;
 };
 
 #endif

@@ -1,5 +1,6 @@
 #include "sampling_grid.h"
 
+#include "Mesh/coordinate_bounds.h"
 #include "Mesh/solid_bounds.h"
 #include "number_format.h"
 #include "user_error.h"
@@ -37,18 +38,9 @@ std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
   for (std::size_t k = 0; k < bounds.box.size(); ++k)
   {
     // Rounded outwards to about 3 significant digits of the extent: a box one can retype.
-    const double extent = bounds.box[k].hi - bounds.box[k].lo;
-    // (n / 10^d rather than n * 10^-d: the shortest form of the result is then short.)
-    const double e = std::floor(std::log10(extent)) - 2.0;
-    const double scale = std::pow(10.0, std::abs(e));
-    const auto round = [e, scale](double v, bool up)
-    {
-      const double n =
-        up ? std::ceil(e < 0 ? v * scale : v / scale) : std::floor(e < 0 ? v * scale : v / scale);
-      return e < 0 ? n / scale : n * scale;
-    };
-    result[k] = round(bounds.box[k].lo, false);
-    result[k + bounds.box.size()] = round(bounds.box[k].hi, true);
+    const frep::Interval axis = frep::mesh::readable(bounds.box[k]);
+    result[k] = axis.lo;
+    result[k + bounds.box.size()] = axis.hi;
     text += std::string(k == 0 ? "" : " x ") + "[" + format_short(result[k]) + ", " +
             format_short(result[k + bounds.box.size()]) + "]";
   }

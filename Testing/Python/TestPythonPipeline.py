@@ -20,6 +20,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import warnings
 
 import numpy
 
@@ -221,6 +222,27 @@ try:
 except frepkit.FRepError as e:
     check(any("no object named 'nosuch' (objects: " in m for m in e.messages),
           "unknown object: the engine's message (%s)" % e.messages)
+
+# The solid's own bounds are the default intervals (solid_bounds=True); a half-space warns.
+def coordinate_range(obj, i):
+    r = [0.0, 0.0]
+    obj.GetCoordinateRange(i, r)
+    return tuple(r)
+
+
+unit = frepkit.load(text="my_model(x[4], a[1]) { my_model = 1 - x[1]^2 - x[2]^2 - x[3]^2 - x[4]^2; }")
+unit_ranges = [coordinate_range(unit, i) for i in range(4)]
+check(all(-1.2 < lo <= -1.0 and 1.0 <= hi < 1.2 for lo, hi in unit_ranges),
+      "a unit 4-D ball gets about [-1.05, 1.05] on each axis: %s" % unit_ranges)
+hfp = frepkit.load(text="my_model(x[3], a[1]) { my_model = 1 - x[1]^2 - x[2]^2 - x[3]^2; }",
+                   solid_bounds=False)
+check(coordinate_range(hfp, 0) == (-10.0, 10.0), "solid_bounds=False: [-10, 10]")
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    half = frepkit.load(text="my_model(x[3], a[1]) { my_model = x[1]; }")
+check(len(caught) == 1 and "reaches the edge" in str(caught[0].message),
+      "a half-space: one Python warning (%s)" % [str(w.message) for w in caught])
+check(coordinate_range(half, 0) == (-10.0, 10.0), "a half-space keeps [-10, 10]")
 
 # Overloaded names: vtkHyperFunSource's ObjectName is the model's object (not vtkObject's).
 named = vtkHyperFunSource()

@@ -116,6 +116,9 @@ int TestFRepBoolean(int, char*[])
   sourceB->SetModelText(BallB);
   sourceB->SetParameter(0, 1.2);
   sourceB->SetCoordinateRange(0, -12.0, 5.0); // x1 of B reaches further down, A's further up
+  // The hull of the intervals is tested with hfp's default box, not the balls' own bounds.
+  sourceA->UseSolidBoundsOff();
+  sourceB->UseSolidBoundsOff();
 
   vtkNew<vtkFRepBoolean> boolean;
   vtkNew<frepkit_test::EventCounter> events;

@@ -90,6 +90,7 @@ int TestFRepPipelineExecutions(int, char*[])
   vtkNew<vtkHyperFunSource> source;
   source->SetModelText(Model4D);
   source->SetCoordinateRange(0, -4, 4);
+  source->UseSolidBoundsOff(); // the grid below is over hfp's default box
   vtkNew<vtkFRepSlice> slice;
   slice->SetInputConnection(source->GetOutputPort());
   slice->SetFixedValue(3, 0.5);

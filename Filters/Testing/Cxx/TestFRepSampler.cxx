@@ -86,6 +86,9 @@ vtkSmartPointer<vtkHyperFunSource> MakeSource(const char* text)
 {
   auto source = vtkSmartPointer<vtkHyperFunSource>::New();
   source->SetModelText(text);
+  // The sampler's default grid is the object's intervals: hfp's default box here, so that the
+  // positions below are known (the solid's bounds: TestFRepSolidBounds).
+  source->UseSolidBoundsOff();
   return source;
 }
 

@@ -47,6 +47,7 @@ int TestFRepObject(int, char*[])
   events->Observe(source);
   source->SetModelText(SphereText);
   source->SetCoordinateRange(2, -3, 4);
+  source->UseSolidBoundsOff(); // the other intervals are DefaultCoordinateRange
   source->Update();
   vtkFRepObject* sphere = source->GetOutput();
   FREPKIT_CHECK(failures, events->Errors == 0 && events->Warnings == 0);

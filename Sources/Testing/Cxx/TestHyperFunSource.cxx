@@ -140,7 +140,10 @@ int TestHyperFunSource(int, char*[])
   FREPKIT_CHECK(failures, source->GetOutput()->GetDimension() == 0);
   source->SetObjectName(nullptr);
 
-  // --- coordinate ranges
+  // --- coordinate ranges (the default range's mechanics; the solid's bounds:
+  // TestHyperFunSourceSolidBounds)
+  FREPKIT_CHECK(failures, source->GetUseSolidBounds() == 1);
+  source->UseSolidBoundsOff();
   source->SetCoordinateRange(1, -2, 3);
   source->SetDefaultCoordinateRange(-5, 5);
   source->Update();
@@ -161,6 +164,7 @@ int TestHyperFunSource(int, char*[])
   source->SetDefaultCoordinateRange(-10, 10);
   source->GetCoordinateRange(1, range);
   FREPKIT_CHECK(failures, range[0] == -10 && range[1] == 10);
+  source->UseSolidBoundsOn();
 
   // --- MTime changes with every property
   auto changes = [&](const char* what, auto&& change)
@@ -187,6 +191,7 @@ int TestHyperFunSource(int, char*[])
   changes("SetParameter", [&] { source->SetParameter(2, 0.5); });
   changes("SetNumberOfParameters", [&] { source->SetNumberOfParameters(5); });
   changes("SetCoordinateRange", [&] { source->SetCoordinateRange(0, -1, 1); });
+  changes("UseSolidBounds", [&] { source->SetUseSolidBounds(0); });
   changes("DefaultCoordinateRange", [&] { source->SetDefaultCoordinateRange(-3, 3); });
   changes("RemoveAllCoordinateRanges", [&] { source->RemoveAllCoordinateRanges(); });
   changes("RemoveAllParameters", [&] { source->RemoveAllParameters(); });
@@ -282,6 +287,7 @@ int TestHyperFunSource(int, char*[])
   source->Print(printed);
   FREPKIT_CHECK(failures, printed.str().find("Parameters (1): 3") != std::string::npos);
   FREPKIT_CHECK(failures, printed.str().find("CachedModel: ball") != std::string::npos);
+  FREPKIT_CHECK(failures, printed.str().find("UseSolidBounds: Off") != std::string::npos);
 
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -20,6 +20,8 @@ See Documentation/python.md.
 
 # ParaView's VTK first: the wrapped modules' base classes (vtkObject, vtkDataObject,
 # vtkAlgorithm, ...) are its classes, and the extension modules import them by name.
+import warnings
+
 import vtkmodules  # noqa: F401
 from vtkmodules import vtkCommonCore as _vtkCommonCore
 from vtkmodules import vtkCommonDataModel as _vtkCommonDataModel  # noqa: F401
@@ -59,17 +61,19 @@ def _strip(text):
 
 
 class ErrorObserver:
-    """Collects the ErrorEvent messages of VTK objects (and keeps them off VTK's output window
-    while attached). Use as a context manager, or call detach() when done::
+    """Collects the ErrorEvent messages of VTK objects (or those of `event`, e.g.
+    "WarningEvent") and keeps them off VTK's output window while attached. Use as a context
+    manager, or call detach() when done::
 
         with frepkit.ErrorObserver(source) as errors:
             source.Update()
         print(errors.messages)
     """
 
-    def __init__(self, *objects):
+    def __init__(self, *objects, event="ErrorEvent"):
         self.messages = []
         self._tags = []
+        self._event = event
         for obj in objects:
             self.attach(obj)
 
@@ -85,7 +89,7 @@ class ErrorObserver:
         def callback(caller, event, calldata, observer=self):
             observer._callback(caller, event, calldata)
         callback.CallDataType = _vtkCommonCore.VTK_STRING
-        self._tags.append((obj, obj.AddObserver("ErrorEvent", callback)))
+        self._tags.append((obj, obj.AddObserver(self._event, callback)))
 
     def detach(self):
         for obj, tag in self._tags:
@@ -135,11 +139,14 @@ def update(algorithm, port=None):
 
 
 def load(text=None, file=None, object=None, parameters=None, ranges=None, default_range=None,
-         libraries=None):
+         libraries=None, solid_bounds=True):
     """Compiles HyperFun text (or the model file `file`: .hf, or a .vm tape) into a
     vtkFRepObject with every coordinate free. `object`: the object to take (default my_model,
-    else the first); `parameters`: a[1..]; `ranges`: [(lo, hi), ...] per coordinate x1.. (None:
-    the default [-10, 10], or `default_range`); `libraries`: files the model may call, HyperFun
+    else the first); `parameters`: a[1..]; `ranges`: [(lo, hi), ...] per coordinate x1.. (None
+    for a coordinate, or a short list: the solid's own bounds when `solid_bounds`, as
+    vtkHyperFunSource.UseSolidBounds finds them, else `default_range`, [-10, 10] by default; a
+    solid that cannot be bounded, e.g. a half-space, gets `default_range` with a Python
+    warning); `libraries`: files the model may call, HyperFun
     .hf files (their objects) or shared libraries implementing frepkit_user.h (their
     functions). Raises FRepError with every diagnostic ("file:line:col: error: ...") if the
     model does not load; the messages are the engine's, the same as frepkit's."""
@@ -161,7 +168,11 @@ def load(text=None, file=None, object=None, parameters=None, ranges=None, defaul
     for i, r in enumerate(ranges or []):
         if r is not None:
             source.SetCoordinateRange(i, float(r[0]), float(r[1]))
-    update(source)
+    source.SetUseSolidBounds(bool(solid_bounds))
+    with ErrorObserver(source, event="WarningEvent") as warned:
+        update(source)
+    for message in warned.messages:
+        warnings.warn(message, stacklevel=2)
     output = source.GetOutput()
     if output.GetDimension() == 0 and output.GetModelDimension() == 0:
         raise FRepError(["the HyperFun program produced no object"])

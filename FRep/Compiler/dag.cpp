@@ -14,24 +14,9 @@ namespace
 
 bool is_commutative(Opcode op)
 {
-  // Bitwise commutative in IEEE arithmetic: a+b, a*b, |a-b| and the R-functions, whose formula
-  // is symmetric operation for operation. Max/Min are not (NaN picks a side).
-  switch (op)
-  {
-    case Opcode::Add:
-    case Opcode::Mul:
-    case Opcode::Union:
-    case Opcode::Intersect:
-    case Opcode::UnionPlain:
-    case Opcode::IntersectPlain:
-    case Opcode::Eq:
-    case Opcode::Ne:
-    case Opcode::And:
-    case Opcode::Or:
-      return true;
-    default:
-      return false;
-  }
+  // Bitwise commutative in IEEE arithmetic (Compiler/opcode.h): a+b, a*b, |a-b| and the
+  // R-functions, whose formula is symmetric operation for operation.
+  return opcode_info(op).has(OpcodeInfo::Commutative);
 }
 
 bool same_bits(double x, double y)

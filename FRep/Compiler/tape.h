@@ -4,6 +4,7 @@
 // per thread.
 #pragma once
 
+#include "Compiler/opcode.h"
 #include "Language/function_table.h"
 #include "Language/source_location.h"
 
@@ -15,68 +16,6 @@
 
 namespace frep
 {
-
-/// Operations. Unless stated, operands are slots a, b, c and the result goes to `out`.
-/// Booleans are the doubles 1.0 (true) and 0.0 (false). "HyperFun" ops reproduce exactly what
-/// the original interpreter computes (same operations in the same order, bit for bit).
-enum class Opcode : std::uint8_t
-{
-  // leaves
-  Const, ///< out = imm
-  Input, ///< out = inputs[index]
-
-  // IEEE arithmetic
-  Add, Sub, Mul, Div, ///< a op b (Div unchecked: checks are separate ErrorIf instructions)
-  Neg,                ///< -a
-  Square,             ///< a * a
-  Abs,                ///< fabs(a)
-
-  // C library, no domain checks (the compiler emits ErrorIf where HyperFun checks)
-  Sqrt, Exp, Log, Log10, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh,
-  Atan2, ///< atan2(a, b)
-  Pow,   ///< C pow(a, b)
-  Floor, Ceil, Trunc,
-  Frac,  ///< fractional part as C modf computes it (keeps the sign; 0 for infinities)
-  Fmod,  ///< fmod(a, b)
-
-  // HyperFun semantics
-  HfPow,     ///< a ^ b by the original's rules, value part (errors via ErrorIf)
-  HfPowInt,  ///< a ^ index for a constant integral exponent `index` (may be negative)
-  HfMod,     ///< fmod(HF_round(a), HF_round(b))
-  HfRound,   ///< HF_round(a): round half up (array indices)
-  Max, Min,  ///< as the original's builtins compute them
-  Union,     ///< a + b + sqrt(a*a + b*b)
-  Intersect, ///< a + b - sqrt(a*a + b*b)   (a \ b = Intersect(a, -b) bit for bit)
-  /// (a + b) ± sqrt(a*a + b*b) as hfBlendUni/hfBlendInt write it: without the R-functions'
-  /// 0*a*b term, so an infinite operand gives inf (or NaN) as written, not always NaN. Its own
-  /// opcode so the interval evaluator can use the monotone rule (the expanded sqrt is loose).
-  UnionPlain,
-  IntersectPlain,
-
-  // comparisons and logic (results 1.0 / 0.0)
-  Eq, Ne,         ///< |a - b| < 1e-6 ; |a - b| >= 1e-6
-  Lt, Le, Gt, Ge, ///< exact
-  Truthy,         ///< |a| >= 1e-6
-  And, Or,        ///< truthiness of a and b
-  Not,            ///< !(|a| >= 1e-6)
-  Select,         ///< a != 0 ? b : c   (a is a boolean slot)
-
-  // run-time errors
-  ErrorIf, ///< if a != 0 and the point has no error yet: error = index (1-based into errors)
-
-  // opaque: a library function without a generic form, or a whole interpreted model
-  Call ///< calls[index]: reads its input slots, writes its output slots, may set the error
-};
-
-/// Returns the mnemonic, for dumps and tests.
-const char* opcode_name(Opcode op);
-
-/// How many of the operand slots a, b, c an opcode reads (0 for Const, Input and Call, whose
-/// operands are an immediate, an input index or a call site; 3 only for Select).
-int operand_count(Opcode op);
-
-/// Whether the opcode's result is always the boolean 1.0 or 0.0 (comparisons and logic).
-bool is_boolean_opcode(Opcode op);
 
 /// One instruction. Slots are indices into the evaluator's register file.
 struct Instruction

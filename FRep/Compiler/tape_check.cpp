@@ -44,7 +44,7 @@ void check_tape(const Tape& tape, const char* who)
     {
       fail(who, at() + " has an unknown opcode");
     }
-    const bool writes = ins.op != Opcode::ErrorIf && ins.op != Opcode::Call;
+    const bool writes = !opcode_info(ins.op).has(OpcodeInfo::NoResult);
     if ((writes && bad_slot(ins.out)) || (reads_a(ins.op) && bad_slot(ins.a)) ||
         (reads_b(ins.op) && bad_slot(ins.b)) || (reads_c(ins.op) && bad_slot(ins.c)))
     {

@@ -7,26 +7,7 @@ namespace frep::eval
 
 bool takes_immediate(Opcode op)
 {
-  switch (op)
-  {
-    case Opcode::Add:
-    case Opcode::Sub:
-    case Opcode::Mul:
-    case Opcode::Div:
-    case Opcode::Max:
-    case Opcode::Min:
-    case Opcode::Union:
-    case Opcode::Intersect:
-    case Opcode::UnionPlain:
-    case Opcode::IntersectPlain:
-    case Opcode::Lt:
-    case Opcode::Le:
-    case Opcode::Gt:
-    case Opcode::Ge:
-      return true;
-    default:
-      return false;
-  }
+  return opcode_info(op).has(OpcodeInfo::ImmediateForm);
 }
 
 namespace

@@ -47,18 +47,7 @@ double magnitude(const Interval& i)
 /// The instructions whose operands a box may dominate: max/min and the R-functions.
 bool joins(Opcode op)
 {
-  switch (op)
-  {
-    case Opcode::Max:
-    case Opcode::Min:
-    case Opcode::Union:
-    case Opcode::UnionPlain:
-    case Opcode::Intersect:
-    case Opcode::IntersectPlain:
-      return true;
-    default:
-      return false;
-  }
+  return opcode_info(op).has(OpcodeInfo::Choice);
 }
 
 /// Whether `x` is dominated by `y` in the instruction `op` over the box (see IntervalFreeze):

@@ -22,7 +22,7 @@ constexpr std::uint32_t kForever = kNone - 1; // last use of an output: the end 
 
 bool writes_out(Opcode op)
 {
-  return op != Opcode::ErrorIf && op != Opcode::Call;
+  return !opcode_info(op).has(OpcodeInfo::NoResult);
 }
 
 /// operand_count per opcode, as a table (simplification runs per box: no call per instruction).

@@ -446,6 +446,60 @@ void emit_instruction(Emitter& e, std::string_view o)
   }
 }
 
+struct VmProblem
+{
+  int column;
+  std::string message;
+};
+
+// The opcode of a line NAME OPCODE [OPERAND...] and its operand count: `wanted` is the opcode's
+// operand count (-2: one number); a problem for an unknown opcode or a wrong count.
+std::optional<VmProblem> check_operands(const std::vector<Token>& tokens, int& wanted)
+{
+  const Token& op = tokens[1];
+  wanted = operand_count_of(op.text);
+  if (wanted == -1)
+  {
+    const bool fidget_random = op.text == "rand" || op.text == "mix";
+    return VmProblem{ op.column,
+      "unknown opcode '" + std::string(op.text) + "'" +
+        (fidget_random ? " (Fidget's pseudo-random opcodes hash f32 bit patterns: not supported)"
+                       : "") +
+        " (known: " + kKnownOpcodes + ")" };
+  }
+  const std::size_t given = tokens.size() - 2;
+  const std::size_t expected = wanted == -2 ? 1 : static_cast<std::size_t>(wanted);
+  if (given != expected)
+  {
+    const Token& where = given > expected ? tokens[2 + expected] : op;
+    return VmProblem{ where.column,
+      "'" + std::string(op.text) + "' takes " + std::to_string(expected) +
+        (wanted == -2     ? " number"
+          : expected == 1 ? " operand"
+                          : " operands") +
+        ", found " + std::to_string(given) };
+  }
+  return std::nullopt;
+}
+
+// A finite decimal number, the whole token (a leading '+' allowed); nullopt otherwise.
+std::optional<double> finite_number(std::string_view text)
+{
+  double c = 0;
+  const char* first = text.data();
+  const char* stop = first + text.size();
+  if (first != stop && *first == '+')
+  {
+    ++first; // from_chars takes no '+'; a leading '+' is still a number
+  }
+  const auto [ptr, ec] = std::from_chars(first, stop, c);
+  if (ec != std::errc() || ptr != stop || !std::isfinite(c))
+  {
+    return std::nullopt;
+  }
+  return c;
+}
+
 } // namespace
 
 bool is_vm_file(std::string_view file_name)
@@ -510,48 +564,22 @@ ParseResult parse_vm(std::string_view text, std::string file_name)
     }
     const Token& op = tokens[1];
     const SourceLocation at{ line_number, op.column };
-    const int wanted = operand_count_of(op.text);
-    if (wanted == -1)
+    int wanted = 0;
+    if (const std::optional<VmProblem> problem = check_operands(tokens, wanted))
     {
-      const bool fidget_random = op.text == "rand" || op.text == "mix";
-      return fail(line_number,
-        op.column,
-        "unknown opcode '" + std::string(op.text) + "'" +
-          (fidget_random ? " (Fidget's pseudo-random opcodes hash f32 bit patterns: not supported)"
-                         : "") +
-          " (known: " + kKnownOpcodes + ")");
-    }
-    const std::size_t given = tokens.size() - 2;
-    const std::size_t expected = wanted == -2 ? 1 : static_cast<std::size_t>(wanted);
-    if (given != expected)
-    {
-      const Token& where = given > expected ? tokens[2 + expected] : op;
-      return fail(line_number,
-        where.column,
-        "'" + std::string(op.text) + "' takes " + std::to_string(expected) +
-          (wanted == -2     ? " number"
-            : expected == 1 ? " operand"
-                            : " operands") +
-          ", found " + std::to_string(given));
+      return fail(line_number, problem->column, problem->message);
     }
     ast::ExprPtr value; // const and var-*; the others emit their own statements
     std::vector<int> operands;
     if (wanted == -2)
     {
       const Token& t = tokens[2];
-      double c = 0;
-      const char* first = t.text.data();
-      const char* stop = first + t.text.size();
-      if (*first == '+')
-      {
-        ++first; // from_chars takes no '+'; a leading '+' is still a number
-      }
-      const auto [ptr, ec] = std::from_chars(first, stop, c);
-      if (ec != std::errc() || ptr != stop || !std::isfinite(c))
+      const std::optional<double> c = finite_number(t.text);
+      if (!c)
       {
         return fail(line_number, t.column, "not a finite number: '" + std::string(t.text) + "'");
       }
-      value = number(at, c);
+      value = number(at, *c);
     }
     else
     {

@@ -173,22 +173,9 @@ std::string vtkFRepEvaluator::GetErrorMessage(int id)
 }
 
 //------------------------------------------------------------------------------
-bool vtkFRepEvaluator::Run(const char* method, vtkDataArray* points, int columns,
-  vtkDoubleArray* values, vtkDoubleArray* attributes, vtkIntArray* errors)
+bool vtkFRepEvaluator::CanRun(
+  const char* method, vtkDataArray* points, int columns, vtkDoubleArray* values)
 {
-  // Empty outputs until the call succeeds.
-  auto clear = [&]
-  {
-    for (vtkDataArray* a : { static_cast<vtkDataArray*>(values),
-           static_cast<vtkDataArray*>(attributes), static_cast<vtkDataArray*>(errors) })
-    {
-      if (a)
-      {
-        a->SetNumberOfTuples(0);
-      }
-    }
-  };
-  clear();
   if (!values)
   {
     vtkErrorMacro(<< method << ": no output array for F");
@@ -213,6 +200,31 @@ bool vtkFRepEvaluator::Run(const char* method, vtkDataArray* points, int columns
     vtkErrorMacro(<< method << ": the object has no free coordinate (a 0-D slice)");
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkFRepEvaluator::Run(const char* method, vtkDataArray* points, int columns,
+  vtkDoubleArray* values, vtkDoubleArray* attributes, vtkIntArray* errors)
+{
+  // Empty outputs until the call succeeds.
+  auto clear = [&]
+  {
+    for (vtkDataArray* a : { static_cast<vtkDataArray*>(values),
+           static_cast<vtkDataArray*>(attributes), static_cast<vtkDataArray*>(errors) })
+    {
+      if (a)
+      {
+        a->SetNumberOfTuples(0);
+      }
+    }
+  };
+  clear();
+  if (!this->CanRun(method, points, columns, values))
+  {
+    return false;
+  }
+  const int k = this->Object->GetDimension();
   const std::shared_ptr<const frep::Tape> tape = this->Object->GetTape();
   if (!tape || tape->outputs.empty() || static_cast<int>(tape->input_count) != k)
   {

@@ -129,6 +129,8 @@ private:
 
   bool Run(const char* method, vtkDataArray* points, int columns, vtkDoubleArray* values,
     vtkDoubleArray* attributes, vtkIntArray* errors);
+  // Run's checks of its arguments and the object (each failure a vtkErrorMacro naming `method`).
+  bool CanRun(const char* method, vtkDataArray* points, int columns, vtkDoubleArray* values);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

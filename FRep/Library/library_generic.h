@@ -24,14 +24,10 @@
 namespace frep::library
 {
 
+// The primitives of call_generic (section 1 of the library); nullopt for any other id.
 template<class T, class Ctx>
-std::optional<T> call_generic(FunctionId id, std::span<Arg<T>> args, Ctx& ctx)
+std::optional<T> call_primitive(FunctionId id, std::span<Arg<T>> args, Ctx& ctx)
 {
-  if (id >= FunctionId::Count || id < FunctionId::Sphere ||
-      static_cast<int>(args.size()) != function_info(id).arity)
-  {
-    return std::nullopt;
-  }
   switch (id)
   {
     // 1. primitives
@@ -84,6 +80,21 @@ std::optional<T> call_generic(FunctionId id, std::span<Arg<T>> args, Ctx& ctx)
     case FunctionId::EllConeZ:
       return ell_cone<2, T>(args, ctx);
 
+    default:
+      return std::nullopt;
+  }
+}
+
+template<class T, class Ctx>
+std::optional<T> call_generic(FunctionId id, std::span<Arg<T>> args, Ctx& ctx)
+{
+  if (id >= FunctionId::Count || id < FunctionId::Sphere ||
+      static_cast<int>(args.size()) != function_info(id).arity)
+  {
+    return std::nullopt;
+  }
+  switch (id)
+  {
     // 2a. blends
     case FunctionId::BlendUni:
       return blend<true, T>(args, ctx);
@@ -172,7 +183,7 @@ std::optional<T> call_generic(FunctionId id, std::span<Arg<T>> args, Ctx& ctx)
       return a_rgb_to_hsv<T>(args, ctx);
 
     default:
-      return std::nullopt;
+      return call_primitive<T>(id, args, ctx);
   }
 }
 

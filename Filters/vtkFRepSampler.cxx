@@ -64,6 +64,76 @@ vtkSmartPointer<ArrayOf<T>> MakeArray(const char* name, int components, vtkIdTyp
   }
   return array;
 }
+
+// Each block of the engine into the arrays: F and s[] as computed (the failure policy is applied
+// already), gradients padded to 3 components (dF/dz = 0 for a 2-D object), normals from them
+// (NaN for a failed sample unless hfp's policy gave it the previous values).
+template <typename T>
+struct BlockStore
+{
+  T* F;
+  T* Gradient;   // null: not computed
+  T* Normals;    // null: not computed
+  T* Attributes; // null: none
+  int AttributeCount;
+  int Dimension;
+  bool Hfp;
+
+  void operator()(const frep::SampleBlock& b) const
+  {
+    const std::size_t base = b.first;
+    for (std::size_t p = 0; p < b.count; ++p)
+    {
+      this->F[base + p] = static_cast<T>(b.values[p]);
+    }
+    for (int j = 0; j < this->AttributeCount; ++j)
+    {
+      T* s = this->Attributes + base * this->AttributeCount + j;
+      const double* column = b.attributes[j];
+      for (std::size_t p = 0; p < b.count; ++p)
+      {
+        s[p * this->AttributeCount] = static_cast<T>(column[p]);
+      }
+    }
+    if (this->Gradient || this->Normals)
+    {
+      for (std::size_t p = 0; p < b.count; ++p)
+      {
+        this->StoreGradient(base + p, b.failed[p] && !this->Hfp, b.gradients + p * this->Dimension);
+      }
+    }
+  }
+
+  void StoreGradient(std::size_t id, bool nan, const double* gradient) const
+  {
+    double g[3] = { NaN, NaN, NaN };
+    if (!nan)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        g[k] = k < this->Dimension ? gradient[k] : 0.0;
+      }
+    }
+    if (this->Gradient)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Gradient[3 * id + k] = static_cast<T>(g[k]);
+      }
+    }
+    if (this->Normals)
+    {
+      const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      // Outward is where F decreases: -grad F. No direction where the gradient vanishes or is not
+      // finite; NaN for a failed sample (NaN policy).
+      const double scale = nan ? NaN : length > 0.0 && std::isfinite(length) ? -1.0 / length : 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Normals[3 * id + k] = static_cast<T>(g[k] * scale);
+      }
+    }
+  }
+};
 }
 
 // The grid decided by RequestInformation, and the thread pool kept between executions.
@@ -407,68 +477,9 @@ bool vtkFRepSampler::Sample(vtkFRepObject* object, vtkImageData* output, const i
     attributes = MakeArray<T>("s", attributeCount, total);
     pd->AddArray(attributes);
   }
-  T* const fOut = F->GetPointer(0);
-  T* const gOut = gradient ? gradient->GetPointer(0) : nullptr;
-  T* const nOut = normals ? normals->GetPointer(0) : nullptr;
-  T* const sOut = attributes ? attributes->GetPointer(0) : nullptr;
-
-  // Each block of the engine into the arrays: F and s[] as computed (the failure policy is
-  // applied already), gradients padded to 3 components (dF/dz = 0 for a 2-D object), normals
-  // from them (NaN for a failed sample unless hfp's policy gave it the previous values).
-  const auto store = [&](const frep::SampleBlock& b)
-  {
-    const std::size_t base = b.first;
-    for (std::size_t p = 0; p < b.count; ++p)
-    {
-      fOut[base + p] = static_cast<T>(b.values[p]);
-    }
-    for (int j = 0; j < attributeCount; ++j)
-    {
-      T* s = sOut + base * attributeCount + j;
-      const double* column = b.attributes[j];
-      for (std::size_t p = 0; p < b.count; ++p)
-      {
-        s[p * attributeCount] = static_cast<T>(column[p]);
-      }
-    }
-    if (!gOut && !nOut)
-    {
-      return;
-    }
-    for (std::size_t p = 0; p < b.count; ++p)
-    {
-      const std::size_t id = base + p;
-      double g[3] = { NaN, NaN, NaN };
-      const bool nan = b.failed[p] && !hfp;
-      if (!nan)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          g[k] = k < dimension ? b.gradients[p * dimension + k] : 0.0;
-        }
-      }
-      if (gOut)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          gOut[3 * id + k] = static_cast<T>(g[k]);
-        }
-      }
-      if (nOut)
-      {
-        const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        // Outward is where F decreases: -grad F. No direction where the gradient vanishes or
-        // is not finite; NaN for a failed sample (NaN policy).
-        const double scale =
-          nan ? NaN : length > 0.0 && std::isfinite(length) ? -1.0 / length : 0.0;
-        for (int k = 0; k < 3; ++k)
-        {
-          nOut[3 * id + k] = static_cast<T>(g[k] * scale);
-        }
-      }
-    }
-  };
-
+  const BlockStore<T> store{ F->GetPointer(0), gradient ? gradient->GetPointer(0) : nullptr,
+    normals ? normals->GetPointer(0) : nullptr, attributes ? attributes->GetPointer(0) : nullptr,
+    attributeCount, dimension, hfp };
   const frep::SampleResult result = frep::sample_grid(tape, grid, options, store);
   this->NumberOfThreadsUsed = result.threads;
   if (!result.error.empty())

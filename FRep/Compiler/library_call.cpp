@@ -140,8 +140,8 @@ public:
   {
     for (std::size_t i = 0; i < errors.size(); ++i)
     {
-      ids_.emplace(
-        std::make_tuple(errors[i].message, errors[i].location.line, errors[i].location.column),
+      ids_.emplace(std::make_tuple(errors[i].message, errors[i].location.line,
+                     errors[i].location.column, errors[i].file),
         static_cast<int>(i + 1));
     }
   }
@@ -172,8 +172,8 @@ public:
     const PointResult r = interpreter.evaluate(inputs);
     if (r.error)
     {
-      const auto key =
-        std::make_tuple(r.error->message, r.error->location.line, r.error->location.column);
+      const auto key = std::make_tuple(
+        r.error->message, r.error->location.line, r.error->location.column, r.error->file);
       const auto it = ids_.find(key);
       return it != ids_.end() ? it->second : unknown_error_;
     }
@@ -194,7 +194,8 @@ private:
   int object_;
   std::vector<double> parameters_;
   int unknown_error_;
-  std::map<std::tuple<std::string, int, int>, int> ids_;
+  // (message, line, column, file) -> the tape's error id
+  std::map<std::tuple<std::string, int, int, std::string>, int> ids_;
 };
 
 /// Collects the errors each AST construct can raise (see int_calc.c and error_positions.h).

@@ -99,6 +99,10 @@ public:
     PointResult result;
     if (!run_object(*top_, result.value))
     {
+      if (error_.file.empty())
+      {
+        error_.file = file_of(*top_->object);
+      }
       result.error = std::move(error_);
       error_ = {};
     }
@@ -108,11 +112,18 @@ public:
 private:
   // ---- failure -------------------------------------------------------------------------------
 
+  // The file errors inside `o` name: its own (a library file's), else the program's.
+  const std::string& file_of(const ast::Object& o) const
+  {
+    return o.file.empty() ? program_.file : o.file;
+  }
+
   bool fail(const char* message, SourceLocation location)
   {
     error_.message = message;
     error_.location = location;
     error_.abort = false;
+    error_.file.clear(); // named by the frame that returns it (eval_object_call, evaluate)
     return false;
   }
 
@@ -605,6 +616,7 @@ private:
       error_.message = *context.abort_message;
       error_.location = e.location;
       error_.abort = true;
+      error_.file.clear();
       return false;
     }
     return true;
@@ -676,6 +688,10 @@ private:
     std::copy(as.begin(), as.end(), callee.a.begin());
     std::copy(ss.begin(), ss.end(), callee.s.begin());
     const bool ok = run_object(callee, out);
+    if (!ok && error_.file.empty())
+    {
+      error_.file = file_of(*callee.object); // it happened in the callee (deeper: named there)
+    }
     // ...but its s[] is copied back, even when it failed (int_calc.c 358-371).
     std::copy(callee.s.begin(), callee.s.end(), ss.begin());
     return ok;

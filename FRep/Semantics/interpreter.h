@@ -27,6 +27,9 @@ struct RuntimeError
   std::string message;     ///< the original's text, e.g. "Division by zero"
   SourceLocation location; ///< the position the original attaches (operator, function name...)
   bool abort = false;      ///< the original called error() and aborted the whole run
+  /// The file of the object it happened in (ast::Object::file: the model's or a library
+  /// file's): the same message at the same line and column of two files are two errors.
+  std::string file{};
 };
 
 struct PointResult

@@ -27,8 +27,8 @@ protected:
   void SetUp() override
   {
     dir_ = fs::temp_directory_path() /
-      ("frep_load_model_" + std::to_string(::getpid()) + "_" +
-        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("frep_load_model_" + std::to_string(::getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -53,8 +53,8 @@ double value_at(const Model& model, std::vector<double> point, std::vector<doubl
 
 TEST_F(LoadModel, AFileLoadsItsDefaultObjectOrTheNamedOne)
 {
-  const std::string path = write("two.hf", std::string(kBall) +
-      "My_Model(x[3], a[1]) { array r[1]; r[1] = 2; my_model = ball(x, r); }\n");
+  const std::string path = write("two.hf",
+    std::string(kBall) + "My_Model(x[3], a[1]) { array r[1]; r[1] = 2; my_model = ball(x, r); }\n");
   const LoadedModel loaded = load_model(ModelSource::file(path));
   ASSERT_TRUE(loaded.ok()) << loaded.message();
   EXPECT_EQ(loaded.model->name(), "my_model");
@@ -115,8 +115,8 @@ TEST_F(LoadModel, BadInputIsADiagnosticNamingTheFile)
   cube.object = "cube";
   const LoadedModel wrong = load_model(ModelSource::from_text(kBall, "ball.hf"), cube);
   ASSERT_EQ(wrong.diagnostics.size(), 1u);
-  EXPECT_EQ(wrong.diagnostics[0].format(),
-    "ball.hf: error: no object named 'cube' (objects: ball)");
+  EXPECT_EQ(
+    wrong.diagnostics[0].format(), "ball.hf: error: no object named 'cube' (objects: ball)");
   EXPECT_NE(wrong.program, nullptr); // parsed: tools may still list the objects
 
   const LoadedModel syntax = load_model(ModelSource::from_text("ball(x[3]) { ball = ; }", "s.hf"));
@@ -154,8 +154,8 @@ TEST_F(LoadModel, ErrorsInsideALibraryObjectNameTheLibraryFile)
   LoadOptions options;
   const std::string library = write("lib.hf", "\n\ninv(x[3], a[1]) { inv = 1 / x[1]; }\n");
   options.libraries = { library };
-  const LoadedModel loaded = load_model(
-    ModelSource::from_text("m(x[3], a[1]) { m = inv(x, a); }\n", "main.hf"), options);
+  const LoadedModel loaded =
+    load_model(ModelSource::from_text("m(x[3], a[1]) { m = inv(x, a); }\n", "main.hf"), options);
   ASSERT_TRUE(loaded.ok()) << loaded.message();
   const auto tape = loaded.model->tape();
   PointEvaluator evaluator(tape);
@@ -166,6 +166,43 @@ TEST_F(LoadModel, ErrorsInsideALibraryObjectNameTheLibraryFile)
   EXPECT_EQ(e.message, messages::kDivisionByZero);
   EXPECT_EQ(e.file, library);
   EXPECT_EQ(e.location.line, 3);
+}
+
+// An interpreted model (a data-dependent loop) raising the same message at the same line and
+// column as its library file: two errors, each naming its own file.
+TEST_F(LoadModel, AnInterpretedModelsErrorsNameTheirFile)
+{
+  LoadOptions options;
+  const std::string library = write("lib.hf", "inv(x[3], a[1]) {\n  inv = 1 / x[1];\n}\n");
+  options.libraries = { library };
+  const LoadedModel loaded =
+    load_model(ModelSource::from_text("m(x[3], a[1]) {\n"
+                                      "  mmm = 1 / x[2];\n"
+                                      "  i = 0;\n"
+                                      "  while i < x[3] loop i = i + 1; endloop;\n"
+                                      "  m = inv(x, a) + mmm + i;\n"
+                                      "}\n",
+                 "main.hf"),
+      options);
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  ASSERT_FALSE(loaded.model->is_compiled()); // the loop: the interpreter runs the object
+  const auto tape = loaded.model->tape();
+  PointEvaluator evaluator(tape);
+  std::vector<double> out(1);
+  const auto error_at = [&](std::vector<double> p) -> const TapeError*
+  {
+    const int id = evaluator.evaluate(p, out);
+    return id > 0 ? &tape->errors[static_cast<std::size_t>(id - 1)] : nullptr;
+  };
+  const TapeError* in_model = error_at({ 1.0, 0.0, 1.0 });   // x[2] = 0: the model's division
+  const TapeError* in_library = error_at({ 0.0, 1.0, 1.0 }); // x[1] = 0: the library's
+  ASSERT_TRUE(in_model && in_library);
+  EXPECT_EQ(in_model->message, messages::kDivisionByZero);
+  EXPECT_EQ(in_library->message, messages::kDivisionByZero);
+  EXPECT_EQ(in_model->location.line, in_library->location.line);
+  EXPECT_EQ(in_model->location.column, in_library->location.column);
+  EXPECT_EQ(in_model->file, "main.hf");
+  EXPECT_EQ(in_library->file, library);
 }
 
 TEST_F(LoadModel, LibraryProblemsAreDiagnosticsNamingTheLibrary)
@@ -189,8 +226,8 @@ TEST_F(LoadModel, LibraryProblemsAreDiagnosticsNamingTheLibrary)
   const LoadedModel c = load_model(ModelSource::from_text(kBall, "main.hf"), twice);
   ASSERT_EQ(c.diagnostics.size(), 1u);
   EXPECT_EQ(c.diagnostics[0].file, "main.hf");
-  EXPECT_NE(c.diagnostics[0].message.find("Body name is not unique (library file"),
-    std::string::npos)
+  EXPECT_NE(
+    c.diagnostics[0].message.find("Body name is not unique (library file"), std::string::npos)
     << c.diagnostics[0].message;
 
   LoadOptions not_a_library;

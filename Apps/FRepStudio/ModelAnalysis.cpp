@@ -2,19 +2,36 @@
 
 #include "Compiler/load_model.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 
 namespace frepstudio
 {
 
-ModelAnalysis analyse_model(const std::string& text, const std::string& file_name,
-  std::uint64_t generation, const frep::LoadOptions& options)
+namespace
+{
+std::string lower_case(std::string text)
+{
+  std::transform(text.begin(),
+    text.end(),
+    text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+}
+
+ModelAnalysis analyse_model(const std::string& text,
+  const std::string& file_name,
+  std::uint64_t generation,
+  const frep::LoadOptions& options,
+  const std::string& shown_object)
 {
   const auto start = std::chrono::steady_clock::now();
   ModelAnalysis analysis;
   analysis.generation = generation;
   analysis.file_name = file_name;
-  analysis.ranges = CoordinateRanges::from_model_text(text);
+  analysis.file_ranges = CoordinateRanges::from_model_text(text);
 
   // The engine's loading call, as every tool uses it: .vm by the name's extension, the libraries.
   frep::LoadedProgram parsed =
@@ -33,11 +50,27 @@ ModelAnalysis analyse_model(const std::string& text, const std::string& file_nam
       summary.s_dim = objects[i].s_dim;
       frep::Model::CompileResult compiled = frep::Model::compile(parsed.program, i);
       summary.model = compiled.model;
+      summary.ranges = analysis.file_ranges;
       for (auto& diagnostic : compiled.diagnostics)
         analysis.diagnostics.push_back(std::move(diagnostic));
       analysis.objects.push_back(std::move(summary));
     }
     analysis.default_object = frep::ast::select_default_object(*parsed.program);
+  }
+  // The box only for a text that will be shown (one with errors keeps the last good model), and
+  // for the object the window will show.
+  if (analysis.ok())
+  {
+    auto shown = std::find_if(analysis.objects.begin(),
+      analysis.objects.end(),
+      [name = lower_case(shown_object)](const ObjectSummary& o) { return o.name == name; });
+    if (shown == analysis.objects.end() && analysis.default_object >= 0)
+      shown = analysis.objects.begin() + analysis.default_object;
+    if (shown != analysis.objects.end() && shown->model)
+    {
+      shown->ranges = analysis.file_ranges.with_solid_bounds(*shown->model);
+      shown->searched = true;
+    }
   }
   analysis.seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,22 +6,25 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCubeAxesActor.h>
-#include <vtkCallbackCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkRenderWindowInteractor.h>
-#include <vtkTexture.h>
+#include <vtkMath.h>
 #include <vtkOutlineSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkTextProperty.h>
+#include <vtkTexture.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace frepstudio
@@ -135,6 +138,9 @@ void SectionView::setSection(vtkPolyData* poly_data, const std::array<double, 3>
   axes_->SetBounds(bounds);
   if (reset_camera)
     resetCamera(bounds);
+  else if (!std::equal(bounds_.begin(), bounds_.end(), bounds))
+    fitCamera(bounds);
+  std::copy(bounds, bounds + 6, bounds_.begin());
   renderer_->ResetCameraClippingRange(bounds);
   // Outside paintGL this only asks QVTKOpenGLNativeWidget for a VTK render in its next paintGL
   // (a plain update() would only re-show the cached frame).
@@ -148,10 +154,53 @@ void SectionView::resetCamera(const double bounds[6])
   camera->SetFocalPoint(0, 0, 0);
   camera->SetPosition(1, 0.8, 2.2);
   camera->SetViewUp(0, 1, 0);
-  // Zoom() scales the view angle: set it first, so every reset gives the same view.
-  camera->SetViewAngle(30);
-  renderer_->ResetCamera(bounds);
-  camera->Zoom(0.95);
+  fitCamera(bounds);
+}
+
+void SectionView::fitCamera(const double bounds[6])
+{
+  // Along the camera's direction, as close as the box's eight corners allow (with kFill of the
+  // view's height and width, room for the axes' labels beside the box): closer than vtkRenderer's
+  // ResetCamera, which fits the box's bounding sphere. A unit ball in its box, in the 440 x 530
+  // view of a 1024 x 700 window: 43% of the height and 53% of the width (40% and 48% before).
+  constexpr double kFill = 0.85;
+  constexpr double kViewAngle = 30;
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetViewAngle(kViewAngle);
+  camera->OrthogonalizeViewUp();
+  double position[3], focal[3], up[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->GetViewUp(up);
+  double back[3] = { position[0] - focal[0], position[1] - focal[1], position[2] - focal[2] };
+  vtkMath::Normalize(back);
+  double right[3];
+  vtkMath::Cross(up, back, right);
+  const QSize size = pixelSize();
+  const double aspect =
+    size.width() > 0 && size.height() > 0 ? double(size.width()) / size.height() : 1.0;
+  const double tan_v = std::tan(vtkMath::RadiansFromDegrees(kViewAngle / 2)) * kFill;
+  const double tan_h = tan_v * aspect;
+  const double centre[3] = {
+    (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2
+  };
+  double distance = 0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double v[3];
+    for (int i = 0; i < 3; ++i)
+      v[i] = bounds[2 * i + ((corner >> i) & 1)] - centre[i];
+    // A corner at depth z towards the camera and offsets (x, y) is in view from distance d
+    // when |x| <= (d - z) tan_h and |y| <= (d - z) tan_v.
+    const double z = vtkMath::Dot(v, back);
+    distance = std::max({ distance,
+      z + std::abs(vtkMath::Dot(v, right)) / tan_h,
+      z + std::abs(vtkMath::Dot(v, up)) / tan_v });
+  }
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(
+    centre[0] + back[0] * distance, centre[1] + back[1] * distance, centre[2] + back[2] * distance);
+  renderer_->ResetCameraClippingRange(bounds);
 }
 
 void SectionView::clearSection()

@@ -35,7 +35,9 @@ public:
   ~SectionView() override;
 
   /// Shows `poly_data` (its "Colors" or "s1" scalars if any) in the box lo..hi. The camera is
-  /// reset when `reset_camera` (a new model or box), otherwise the user's view is kept.
+  /// reset to the default direction when `reset_camera` (a new model or object); otherwise the
+  /// user's direction is kept, and the camera is moved to fit the box when the box differs from
+  /// the last one (an edit changed the solid's bounds), else not at all.
   void setSection(vtkPolyData* poly_data, const std::array<double, 3>& lo,
     const std::array<double, 3>& hi, bool reset_camera);
   /// Removes the section (the outline and axes stay).
@@ -77,6 +79,8 @@ protected:
 
 private:
   void resetCamera(const double bounds[6]);
+  /// Fits `bounds` to the view along the camera's direction, as resetCamera does.
+  void fitCamera(const double bounds[6]);
   /// Back to the gradient background and the outline (the caller sets the mesh's visibility).
   void dropPicture();
 
@@ -92,6 +96,7 @@ private:
   vtkSmartPointer<vtkPolyData> shown_;
   vtkNew<vtkTexture> picture_texture_;
   bool showing_picture_ = false;
+  std::array<double, 6> bounds_{}; ///< the box of the last setSection
 };
 
 } // namespace frepstudio

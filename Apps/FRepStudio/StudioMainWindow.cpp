@@ -155,12 +155,8 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   connect(errors_, &ErrorListWidget::locationActivated, editor_, &HyperFunEditor::goToLocation);
   connect(panel_, &CoordinatePanel::valuesChanged, this, &StudioMainWindow::onValuesChanged);
   connect(panel_, &CoordinatePanel::objectChanged, this, [this] {
-    if (const ObjectSummary* object = currentObjectSummary())
-    {
-      panel_->setModelShape(object->x_dim, object->a_dim, analysis_->ranges);
-      reset_camera_ = true;
-      requestSection({ kCoarseResolution, kRefinedResolution });
-    }
+    reset_camera_ = true;
+    showCurrentObject();
   });
   connect(worker_, &MeshWorker::sectionReady, this, &StudioMainWindow::onSectionReady);
   connect(worker_, &MeshWorker::sectionFailed, this, [this](quint64, const QString& message) {
@@ -360,6 +356,10 @@ void StudioMainWindow::startAnalysis()
   const std::string text = editor_->toPlainText().toStdString();
   const std::string name = file_.isEmpty() ? std::string("<editor>")
                                            : QFileInfo(file_).fileName().toStdString();
+  // The object applyAnalysis will show (a pending choice, else the current one if the text still
+  // has it, else the default): the one whose box the analysis searches.
+  const std::string shown =
+    pending_object_.isEmpty() ? panel_->currentObject() : pending_object_.toStdString();
   ++analyses_running_;
   // The watcher belongs to the window: if the window closes first, the result is dropped.
   auto* watcher = new QFutureWatcher<ModelAnalysis>(this);
@@ -371,8 +371,8 @@ void StudioMainWindow::startAnalysis()
     if (result.generation == analysis_generation_)
       applyAnalysis(std::move(result));
   });
-  watcher->setFuture(QtConcurrent::run([text, name, generation, options = loadOptions_]
-    { return analyse_model(text, name, generation, options); }));
+  watcher->setFuture(QtConcurrent::run([text, name, generation, options = loadOptions_, shown]
+    { return analyse_model(text, name, generation, options, shown); }));
 }
 
 void StudioMainWindow::applyAnalysis(ModelAnalysis analysis)
@@ -397,15 +397,71 @@ void StudioMainWindow::applyAnalysis(ModelAnalysis analysis)
   panel_->setObjects(names, analysis_->default_object);
   if (!pending_object_.isEmpty() && panel_->selectObject(pending_object_.toStdString()))
     pending_object_.clear();
-  if (const ObjectSummary* object = currentObjectSummary())
-  {
-    {
-      QSignalBlocker block(panel_);
-      panel_->setModelShape(object->x_dim, object->a_dim, analysis_->ranges);
-    }
-    requestSection({ kCoarseResolution, kRefinedResolution });
-  }
+  showCurrentObject();
   emit analysisApplied();
+}
+
+void StudioMainWindow::showCurrentObject()
+{
+  const ObjectSummary* object = currentObjectSummary();
+  if (!object)
+    return;
+  {
+    // x4..'s ranges do not wait for the search: they are the file's or [0, 1] either way.
+    QSignalBlocker block(panel_);
+    panel_->setModelShape(object->x_dim, object->a_dim, object->ranges);
+  }
+  if (!object->searched)
+  {
+    errors_->setWarning({});
+    searchBounds(*object); // the section follows the box
+    return;
+  }
+  showRangesNote(*object);
+  requestSection({ kCoarseResolution, kRefinedResolution });
+}
+
+void StudioMainWindow::showRangesNote(const ObjectSummary& object)
+{
+  // Said once, beside the model's errors, for as long as this object of this text is shown.
+  const std::string& note = object.ranges.note();
+  errors_->setWarning(note.empty() ? QString()
+                                   : tr("%1: warning: %2: %3")
+                                       .arg(QString::fromStdString(analysis_->file_name),
+                                         QString::fromStdString(object.name),
+                                         QString::fromStdString(note)));
+}
+
+void StudioMainWindow::searchBounds(const ObjectSummary& object)
+{
+  // The analysis searched the object it was to show; another one picked since is searched here,
+  // off the UI thread, in the analysis's model (a later edit's analysis makes this one moot).
+  if (!searching_.insert({ analysis_->generation, object.name }).second)
+    return; // already under way
+  ++analyses_running_;
+  auto* watcher = new QFutureWatcher<CoordinateRanges>(this);
+  connect(watcher, &QFutureWatcher<CoordinateRanges>::finished, this,
+    [this, watcher, generation = analysis_->generation, name = object.name] {
+      --analyses_running_;
+      searching_.erase({ generation, name });
+      const CoordinateRanges ranges = watcher->result();
+      watcher->deleteLater();
+      if (!analysis_ || analysis_->generation != generation)
+        return;
+      for (ObjectSummary& o : analysis_->objects)
+        if (o.name == name && !o.searched)
+        {
+          o.ranges = ranges;
+          o.searched = true;
+          if (panel_->currentObject() == name)
+          {
+            showRangesNote(o);
+            requestSection({ kCoarseResolution, kRefinedResolution });
+          }
+        }
+    });
+  watcher->setFuture(QtConcurrent::run([model = object.model, file = analysis_->file_ranges]
+    { return file.with_solid_bounds(*model); }));
 }
 
 const ObjectSummary* StudioMainWindow::currentObjectSummary() const
@@ -423,8 +479,8 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
 {
   refine_timer_.stop();
   const ObjectSummary* object = currentObjectSummary();
-  if (!object || !object->model)
-    return;
+  if (!object || !object->model || !object->searched)
+    return; // no box yet: searchBounds requests the section when it has one
   SectionRequest request;
   request.model = object->model;
   request.s_dim = object->s_dim;
@@ -432,7 +488,7 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
   request.fixed_values = panel_->fixedValues();
   for (int i = 0; i < 3; ++i)
   {
-    const auto range = analysis_->ranges.range(i);
+    const auto range = object->ranges.range(i);
     request.lo[i] = range[0];
     request.hi[i] = range[1];
   }
@@ -446,7 +502,7 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
   static_cast<SectionSpec&>(sheet.base) = request;
   sheet.base.pixels = 120;
   for (int i = 3; i < object->x_dim; ++i)
-    sheet.extra_ranges.push_back(analysis_->ranges.range(i));
+    sheet.extra_ranges.push_back(object->ranges.range(i));
   spreadsheet_->setSheet(sheet);
   path_->setCoordinates(sheet.extra_ranges);
 

@@ -1,9 +1,10 @@
 // FRepStudio's main window: the HyperFun editor beside the live 3-D cross-section, the model
 // panel (object, x4.. sliders, a[]), the error list, and the file menus. The text is analysed
-// (parsed and compiled) on a short debounce off the UI thread; the section is meshed off the UI
-// thread, coarse first and refined when the values rest (MeshWorker); in "High quality" mode
-// the refined section is then ray-cast at the view's camera (PictureWorker) and shown in place of
-// the mesh until the camera moves.
+// (parsed, compiled, and the shown object's box found from the solid's bounds: CoordinateRanges)
+// on a short debounce off the UI thread; the section is meshed off the UI thread, coarse first
+// and refined when the values rest (MeshWorker); in "High quality" mode the refined section is
+// then ray-cast at the view's camera (PictureWorker) and shown in place of the mesh until the
+// camera moves.
 #pragma once
 
 #include "HyperFunEditor.h"
@@ -18,6 +19,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
+#include <string>
+#include <utility>
 
 class QTabWidget;
 class QAction;
@@ -72,6 +76,8 @@ public:
   /// The current file ("" for an unnamed model).
   QString currentFile() const { return file_; }
   const ModelAnalysis* analysis() const { return analysis_ ? &*analysis_ : nullptr; }
+  /// The object shown (null when none); its `ranges` are the box and the sliders' ranges.
+  const ObjectSummary* currentObjectSummary() const;
 
   HyperFunEditor* editor() const { return editor_; }
   ErrorListWidget* errorList() const { return errors_; }
@@ -126,7 +132,14 @@ private:
   void addRecentFile(const QString& path);
   void updateRecentMenu();
   void updateTitle();
-  const ObjectSummary* currentObjectSummary() const;
+  /// The panel's sliders and a[] fields for the current object, then its section once its box
+  /// is known (searchBounds when the analysis did not search it).
+  void showCurrentObject();
+  /// The object's ranges note (a solid without bounds keeps hfp's box) as the error list's warning.
+  void showRangesNote(const ObjectSummary& object);
+  /// Searches `object`'s box off the UI thread (CoordinateRanges::with_solid_bounds); then shows
+  /// its section if it is still the current object of the current analysis.
+  void searchBounds(const ObjectSummary& object);
 
   HyperFunEditor* editor_ = nullptr;
   SectionView* view_ = nullptr;
@@ -148,7 +161,9 @@ private:
   QTimer parse_timer_;
   QTimer refine_timer_;
   std::uint64_t analysis_generation_ = 0;
-  int analyses_running_ = 0;
+  int analyses_running_ = 0; ///< analyses and searchBounds jobs
+  /// searchBounds jobs under way: the analysis's generation and the object's name.
+  std::set<std::pair<std::uint64_t, std::string>> searching_;
   std::optional<ModelAnalysis> analysis_;
   QString pending_object_;
   bool reset_camera_ = true;

@@ -222,8 +222,10 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "FRepStudio: screenshot failed: %s\n", qPrintable(error));
       return 1;
     }
-    if (window.analysis() == nullptr || !window.errorList()->messages().isEmpty())
+    if (window.analysis() == nullptr || window.errorList()->errorCount() > 0)
       std::fprintf(stderr, "FRepStudio: note: the model has errors (see the picture)\n");
+    if (!window.errorList()->warning().isEmpty())
+      std::fprintf(stderr, "FRepStudio: %s\n", qPrintable(window.errorList()->warning()));
     return 0;
   }
   return app.exec();

@@ -1,20 +1,23 @@
-// FRepStudio under QTest (run by ctest under xvfb-run, QT_QPA_PLATFORM=xcb): screenshots against a
-// baseline, the error list, typing into the editor, progressive and cancelled meshing, the
-// object picker, and open/close cycles.
+// FRepStudio under QTest (run by ctest under xvfb-run, QT_QPA_PLATFORM=xcb): the box of x1..x3
+// from the solid's own bounds and the pictures framing it, screenshots against a baseline, the
+// error list, typing into the editor, progressive and cancelled meshing, the object picker, and
+// open/close cycles.
+#include "AnimationExport.h"
 #include "CoordinatePanel.h"
 #include "CoordinateRanges.h"
 #include "ErrorListWidget.h"
 #include "ImageComparison.h"
 #include "MappingEditor.h"
+#include "ModelAnalysis.h"
 #include "PathPanel.h"
+#include "Plan/mapping_json.h"
 #include "ScreenshotCapture.h"
 #include "SectionView.h"
 #include "SpreadsheetPanel.h"
 #include "StudioMainWindow.h"
-#include "AnimationExport.h"
-#include "Plan/mapping_json.h"
 
 #include "Language/parser.h"
+#include "Mesh/solid_bounds.h"
 #include "Mesh/surface.h"
 
 #include <QApplication>
@@ -89,10 +92,17 @@ std::unique_ptr<StudioMainWindow> shownWindow()
   return window;
 }
 
-/// The reference: the same section meshed directly by the engine.
-std::size_t engineTriangles(const QString& file, const char* object,
-  std::vector<std::optional<double>> fixed, int n)
+/// The reference: the same section meshed directly by the engine, in the box the window meshes
+/// (its current object's x1..x3).
+std::size_t engineTriangles(const StudioMainWindow& window,
+  const QString& file,
+  const char* object,
+  std::vector<std::optional<double>> fixed,
+  int n)
 {
+  const ObjectSummary* shown = window.currentObjectSummary();
+  if (!shown)
+    return 0;
   QFile in(file);
   if (!in.open(QIODevice::ReadOnly))
     return 0;
@@ -103,6 +113,11 @@ std::size_t engineTriangles(const QString& file, const char* object,
   specialisation.fixed = std::move(fixed);
   frep::mesh::Grid grid;
   grid.samples = { n, n, n };
+  for (int i = 0; i < 3; ++i)
+  {
+    grid.lo[i] = shown->ranges.range(i)[0];
+    grid.hi[i] = shown->ranges.range(i)[1];
+  }
   return frep::mesh::extract_surface(model->specialise(specialisation), grid)
     .surface.cell_count();
 }
@@ -119,6 +134,57 @@ int greenPixels(const QImage& image)
       count += c.green() > c.red() + 8 && c.green() > c.blue() + 8;
     }
   return count;
+}
+
+/// The height and the width of the smallest rectangle holding every green pixel of `image` (as
+/// in greenPixels), as fractions of the image's: how much of the picture the shape spans.
+std::pair<double, double> greenExtent(const QImage& image)
+{
+  QRect box;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+    {
+      const QColor c = image.pixelColor(x, y);
+      if (c.green() > c.red() + 8 && c.green() > c.blue() + 8)
+        box |= QRect(x, y, 1, 1);
+    }
+  return { static_cast<double>(box.height()) / image.height(),
+    static_cast<double>(box.width()) / image.width() };
+}
+
+/// The same for the pixels that differ from the top-left pixel (a spreadsheet cell's background).
+std::pair<double, double> coveredExtent(const QImage& image)
+{
+  const QColor background = image.pixelColor(0, 0);
+  QRect box;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+    {
+      const QColor c = image.pixelColor(x, y);
+      if (std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
+            std::abs(c.blue() - background.blue()) >
+          24)
+        box |= QRect(x, y, 1, 1);
+    }
+  return { static_cast<double>(box.height()) / image.height(),
+    static_cast<double>(box.width()) / image.width() };
+}
+
+const std::string kUnitBall =
+  "my_model(x[3], a[1])\n{\n  my_model = 1 - x[1]^2 - x[2]^2 - x[3]^2;\n}\n";
+const std::string kHalfSpace = "my_model(x[3], a[1])\n{\n  my_model = x[1];\n}\n";
+
+/// `range` is [-r, r] plus the 5% margin of the solid's bounds (up to the search's resolution
+/// and readable()'s rounding): a unit ball gets about [-1.1, 1.1].
+bool aboutBallBounds(const std::array<double, 2>& range, double r)
+{
+  return range[0] <= -r * 1.04 && range[0] >= -r * 1.2 && range[1] >= r * 1.04 &&
+         range[1] <= r * 1.2;
+}
+
+QString rangeText(const std::array<double, 2>& range)
+{
+  return QString("[%1, %2]").arg(range[0]).arg(range[1]);
 }
 
 /// Pixels of `image` that differ from its top-left pixel (the cell's background).
@@ -143,6 +209,8 @@ class TestFRepStudio : public QObject
   Q_OBJECT
 private slots:
   void coordinateRangesFromFile();
+  void boxIsTheSolidsBounds();
+  void viewFramesTheSolid();
   void screenshotCommandMatchesBaseline();
   void sliderScreenshotMatchesBaseline();
   void errorListShowsFileLineColumn();
@@ -183,6 +251,158 @@ void TestFRepStudio::coordinateRangesFromFile()
   QCOMPARE(spin->minimum(), 0.0);
   QCOMPARE(spin->maximum(), 2.0);
   QVERIFY(window->sectionView()->cellCount() > 0);
+}
+
+void TestFRepStudio::boxIsTheSolidsBounds()
+{
+  // A unit ball: x1..x3 are its own bounds with the margin, not hfp's [-10, 10].
+  const ModelAnalysis ball = analyse_model(kUnitBall, "ball.hf", 1);
+  QVERIFY(ball.ok());
+  const CoordinateRanges& ranges = ball.objects.at(0).ranges;
+  for (int i = 0; i < 3; ++i)
+  {
+    QVERIFY2(aboutBallBounds(ranges.range(i), 1.0), qPrintable(rangeText(ranges.range(i))));
+    QVERIFY(ranges.is_from_solid(i));
+  }
+  QVERIFY(ranges.note().empty());
+
+  // A line of the file wins, for its coordinate only.
+  const ModelAnalysis lined =
+    analyse_model("-- frepstudio: x1 = [-4, 4.5]\n" + kUnitBall, "lined.hf", 2);
+  QVERIFY(lined.ok());
+  const CoordinateRanges& line = lined.objects.at(0).ranges;
+  QCOMPARE(line.range(0)[0], -4.0);
+  QCOMPARE(line.range(0)[1], 4.5);
+  QVERIFY(line.is_from_file(0) && !line.is_from_solid(0));
+  QVERIFY2(aboutBallBounds(line.range(1), 1.0), qPrintable(rangeText(line.range(1))));
+
+  // A half-space cannot be bounded: hfp's box, and a note that says so and how to choose one.
+  const ModelAnalysis half = analyse_model(kHalfSpace, "half.hf", 3);
+  QVERIFY(half.ok());
+  const CoordinateRanges& open = half.objects.at(0).ranges;
+  for (int i = 0; i < 3; ++i)
+  {
+    QCOMPARE(open.range(i)[0], -10.0);
+    QCOMPARE(open.range(i)[1], 10.0);
+    QVERIFY(!open.is_from_solid(i));
+  }
+  const QString note = QString::fromStdString(open.note());
+  QVERIFY2(note.contains("reaches the edge of [-1000, 1000]") &&
+             note.contains("x1, x2, x3 keep [-10, 10]") && note.contains("-- frepstudio: x1 ="),
+    qPrintable(note));
+
+  // Meta5D (not bounded in 5-D): x1..x3 cover its four key shapes, the sections at the corners
+  // of the sliders' [0, 1]^2, each bounded here on its own (no margin); x4 and x5 keep [0, 1].
+  QFile in(kMeta5D);
+  QVERIFY(in.open(QIODevice::ReadOnly));
+  const ModelAnalysis meta5d = analyse_model(in.readAll().toStdString(), "meta5d.hf", 4);
+  QVERIFY(meta5d.ok());
+  const auto object = [&](const std::string& name) -> const ObjectSummary&
+  {
+    return *std::find_if(meta5d.objects.begin(),
+      meta5d.objects.end(),
+      [&](const ObjectSummary& o) { return o.name == name; });
+  };
+  const CoordinateRanges& box = object("my_model").ranges;
+  QVERIFY(box.note().empty());
+  QCOMPARE(box.range(3), (std::array<double, 2>{ 0.0, 1.0 }));
+  QCOMPARE(box.range(4), (std::array<double, 2>{ 0.0, 1.0 }));
+  frep::mesh::SolidBoundsOptions tight;
+  tight.margin = 0;
+  for (const char* key : { "cat", "robot", "nihon", "roblet" })
+  {
+    const frep::mesh::SolidBounds shape =
+      frep::mesh::find_solid_bounds(object(key).model->tape(), tight);
+    QVERIFY2(shape.bounded(), key);
+    for (int i = 0; i < 3; ++i)
+    {
+      QVERIFY(box.is_from_solid(i));
+      QVERIFY2(box.range(i)[0] <= shape.box[i].lo && shape.box[i].hi <= box.range(i)[1],
+        qPrintable(QString("%1: x%2 in [%3, %4], the box %5")
+                     .arg(key)
+                     .arg(i + 1)
+                     .arg(shape.box[i].lo)
+                     .arg(shape.box[i].hi)
+                     .arg(rangeText(box.range(i)))));
+    }
+  }
+}
+
+void TestFRepStudio::viewFramesTheSolid()
+{
+  auto window = shownWindow();
+  QVERIFY(window);
+  // The unit ball spans at least half of the view's height or width (the measure; with
+  // [-10, 10] it was a twentieth). The view fits the box's corners (with the axes' labels
+  // beside), from hfp's oblique direction: a ball in its box gets no more than about 0.55.
+  window->setModelText(QString::fromStdString(kUnitBall));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(aboutBallBounds(window->currentObjectSummary()->ranges.range(0), 1.0));
+  QCOMPARE(window->errorList()->count(), 0);
+  const auto [ball_height, ball_width] = greenExtent(window->sectionView()->renderToImage());
+  QVERIFY2(std::max(ball_height, ball_width) > 0.5,
+    qPrintable(QString("the ball spans %1 of the view's height, %2 of its width")
+                 .arg(ball_height)
+                 .arg(ball_width)));
+
+  // A half-space is drawn in hfp's box and said so, once, in the error list (not an error).
+  window->setModelText(QString::fromStdString(kHalfSpace));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->sectionView()->cellCount() > 0);
+  ErrorListWidget* errors = window->errorList();
+  QCOMPARE(errors->count(), 1);
+  QCOMPARE(errors->errorCount(), 0);
+  QVERIFY2(errors->item(0)->text().startsWith("<editor>: warning: my_model: the solid reaches") &&
+             errors->item(0)->text().contains("keep [-10, 10]"),
+    qPrintable(errors->item(0)->text()));
+  // A typo lists its error beside the warning of the model still shown; mending it keeps one row.
+  window->setModelText(QString::fromStdString(kHalfSpace).replace("x[1];", "x[1] +;"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(errors->errorCount(), 1);
+  QCOMPARE(errors->count(), 2);
+  window->setModelText(QString::fromStdString(kHalfSpace).replace("x[1];", "x[2];"));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(errors->count(), 1);
+  // A bounded solid again: the warning goes.
+  window->setModelText(QString::fromStdString(kUnitBall));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QCOMPARE(errors->count(), 0);
+
+  // Meta5D's key shapes fill their common box [-10, 10]^3 (see its header): its box is about
+  // hfp's, [-9.7, 9.7] x [-9.8, 9.7] x [-8.1, 8.1], and Cat, at x4 = x5 = 0, is framed by the
+  // view's fit of the box's corners (0.36 of the height before: hfp's box, fitted by its
+  // bounding sphere).
+  QVERIFY(window->loadFile(kMeta5D));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  const auto [cat_height, cat_width] = greenExtent(window->sectionView()->renderToImage());
+  QVERIFY2(std::max(cat_height, cat_width) > 0.4,
+    qPrintable(QString("Cat spans %1 of the view's height, %2 of its width")
+                 .arg(cat_height)
+                 .arg(cat_width)));
+
+  // A 5-D ball whose radius follows x4 and x5 (0.89 to 1.1 over the sliders' [0, 1]^2; not
+  // bounded in 5-D): x1..x3 cover the sections at the corners, and every cell of the spreadsheet
+  // frames its ball.
+  window->setModelText("my_model(x[5], a[1])\n{\n  my_model = 1 + 0.2 * x[4] - 0.2 * x[5] - "
+                       "x[1]^2 - x[2]^2 - x[3]^2;\n}\n");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY2(aboutBallBounds(window->currentObjectSummary()->ranges.range(1), std::sqrt(1.2)),
+    qPrintable(rangeText(window->currentObjectSummary()->ranges.range(1))));
+  window->showSpreadsheet(true);
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  SpreadsheetPanel* sheet = window->spreadsheetPanel();
+  QCOMPARE(sheet->finishedCells(), 25);
+  for (const auto& [row, column] : { std::pair{ 0, 0 }, { 0, 4 }, { 4, 0 }, { 4, 4 } })
+  {
+    const auto [height, width] =
+      coveredExtent(sheet->cell(row, column)->icon().pixmap(120).toImage());
+    QVERIFY2(std::max(height, width) > 0.5,
+      qPrintable(QString("cell (%1, %2) spans %3 of its height, %4 of its width")
+                   .arg(row)
+                   .arg(column)
+                   .arg(height)
+                   .arg(width)));
+  }
 }
 
 void TestFRepStudio::screenshotCommandMatchesBaseline()
@@ -229,7 +449,8 @@ void TestFRepStudio::sliderScreenshotMatchesBaseline()
   QVERIFY(wait_until_settled(*window, kSettleMs));
   QVERIFY(window->sectionView()->cellCount() != before);
   QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
-    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.3, 0.6 }, 128));
+    engineTriangles(
+      *window, kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.3, 0.6 }, 128));
   expectBaseline(capture_window(*window), "FRepStudioMeta5D", "slider-meta5d");
 }
 
@@ -269,6 +490,8 @@ void TestFRepStudio::typingUpdatesView()
   QVERIFY(wait_until_settled(*window, kSettleMs));
   const long long radius5 = window->sectionView()->cellCount();
   QVERIFY(radius5 > 0);
+  double bounds5[6];
+  window->sectionView()->section()->GetBounds(bounds5);
 
   window->editor()->setFocus();
   QVERIFY(window->editor()->find("c, 5)"));
@@ -279,8 +502,19 @@ void TestFRepStudio::typingUpdatesView()
   QVERIFY(window->windowTitle().contains('*'));
   QVERIFY(wait_until_settled(*window, kSettleMs));
   const long long radius2 = window->sectionView()->cellCount();
-  QVERIFY2(radius2 > 0 && radius2 < radius5,
-    qPrintable(QString("radius 5: %1 triangles, radius 2: %2").arg(radius5).arg(radius2)));
+  double bounds2[6];
+  window->sectionView()->section()->GetBounds(bounds2);
+  // The box follows the solid's bounds (about [-5.5, 5.5], then [-2.2, 2.2]): the mesh has about
+  // as many triangles, but spans 4 instead of 10, and the view fits the new box.
+  QVERIFY2(radius2 > 0 && std::abs(bounds5[1] - 5) < 0.05 && std::abs(bounds2[1] - 2) < 0.05,
+    qPrintable(QString("radius 5: %1 triangles up to x1 = %2, radius 2: %3 up to %4")
+                 .arg(radius5)
+                 .arg(bounds5[1])
+                 .arg(radius2)
+                 .arg(bounds2[1])));
+  const auto [height2, width2] = greenExtent(window->sectionView()->renderToImage());
+  QVERIFY2(std::max(height2, width2) > 0.5,
+    qPrintable(QString("the edited ball spans %1 x %2 of the view").arg(height2).arg(width2)));
 
   // A typo keeps the last good section on screen and lists the error.
   QTest::keyClicks(window->editor(), " +");
@@ -327,7 +561,8 @@ void TestFRepStudio::coarseThenRefinedAndCancelled()
   QCOMPARE(shown.at(0).at(0).toInt(), StudioMainWindow::kCoarseResolution);
   QCOMPARE(shown.at(1).at(0).toInt(), StudioMainWindow::kRefinedResolution);
   QCOMPARE(static_cast<std::size_t>(shown.at(1).at(1).toLongLong()),
-    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.55, 0.0 }, 128));
+    engineTriangles(
+      *window, kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.55, 0.0 }, 128));
 }
 
 void TestFRepStudio::objectPickerAndParameters()
@@ -345,13 +580,18 @@ void TestFRepStudio::objectPickerAndParameters()
   QVERIFY(window->setValue("x4", 1.0));
   QVERIFY(wait_until_settled(*window, kSettleMs));
   QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
-    engineTriangles(kMeta5D, "robot", {}, 128));
+    engineTriangles(*window, kMeta5D, "robot", {}, 128));
 
   picker->setCurrentIndex(picker->findText("cat"));
   QVERIFY(wait_until_settled(*window, kSettleMs));
   QCOMPARE(window->coordinatePanel()->sliderCount(), 0); // cat is 3-D
+  // Cat's own box, searched when picked (the analysis searched my_model's only).
+  const ObjectSummary* cat = window->currentObjectSummary();
+  QVERIFY(cat && cat->searched && cat->ranges.is_from_solid(2));
+  QVERIFY2(cat->ranges.range(2)[1] < 6.0, // Meta5D's box reaches 8.1 in x3 (NiHon)
+    qPrintable(rangeText(cat->ranges.range(2))));
   QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
-    engineTriangles(kMeta5D, "cat", {}, 128));
+    engineTriangles(*window, kMeta5D, "cat", {}, 128));
 
   // A parameter field re-meshes like a slider (Meta5D ignores a[1]: same triangles).
   QSignalSpy shown(window.get(), &StudioMainWindow::sectionShown);
@@ -430,7 +670,8 @@ void TestFRepStudio::spreadsheetCellMovesSliders()
   QVERIFY(wait_until_settled(*window, kSettleMs));
   QVERIFY(window->sectionView()->isVisible());
   QCOMPARE(static_cast<std::size_t>(window->sectionView()->cellCount()),
-    engineTriangles(kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.75, 0.5 }, 128));
+    engineTriangles(
+      *window, kMeta5D, "my_model", { std::nullopt, std::nullopt, std::nullopt, 0.75, 0.5 }, 128));
 }
 
 void TestFRepStudio::spreadsheetRaycastCells()

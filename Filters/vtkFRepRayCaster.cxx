@@ -42,17 +42,89 @@ unsigned char ToByte(float v)
 }
 }
 
-// What RequestInformation decided, for RequestData: the picture's size, the box and the camera
-// (and the floor, when there is one).
+// What RequestInformation decided, for RequestData: the picture's size and the box.
 struct vtkFRepRayCaster::Internals
 {
   bool Valid = false;
   int Width = 0;
   int Height = 0;
   double Box[6] = { 0, 0, 0, 0, 0, 0 }; // lo, hi per axis
+
+  // The execution's camera and floor, once the tape is known (see Fit).
   frep::render::Camera Camera;
   std::optional<frep::raycast::Floor> Floor;
+  void Fit(vtkFRepRayCaster& self, frep::raycast::Shape& shape);
 };
+
+// The camera frames the solid (FrameSolid): its silhouette seen from the camera's direction
+// (raycast::silhouette, inside the solid's bounds in the box, which the shape keeps so that
+// rendering does not search again), within 90 % of the picture's width or height; or the box's
+// bounding sphere (FrameSolid off, or nothing in the box). With the floor, the solid stands on
+// it: the floor's height is the solid's lowest point (raycast::lowest_z), and the floor's
+// squares spread under the solid's bounds (or the box) are framed with it.
+void vtkFRepRayCaster::Internals::Fit(vtkFRepRayCaster& self, frep::raycast::Shape& shape)
+{
+  frep::render::Vec3 lo{ this->Box[0], this->Box[2], this->Box[4] };
+  frep::render::Vec3 hi{ this->Box[1], this->Box[3], this->Box[5] };
+  std::vector<frep::render::Vec3> outline; // what the camera must see, when it frames the solid
+  double spacing = 0.0;
+  if (self.FrameSolid)
+  {
+    shape.bounds = frep::raycast::solid_bounds(shape.tape, shape.box);
+    for (int a = 0; shape.bounds->bounded() && a < 3; ++a)
+    {
+      lo[a] = shape.bounds->box[a].lo;
+      hi[a] = shape.bounds->box[a].hi;
+    }
+    frep::raycast::Silhouette seen = frep::raycast::silhouette(
+      shape, frep::render::view_frame(self.Azimuth, self.Elevation), 64, self.NumberOfThreads);
+    outline = std::move(seen.points);
+    spacing = seen.spacing;
+  }
+  this->Floor.reset();
+  if (self.Floor)
+  {
+    const std::optional<double> bottom = frep::raycast::lowest_z(shape, 128, self.NumberOfThreads);
+    lo[2] = !outline.empty() && bottom ? *bottom : lo[2];
+    this->Floor = frep::raycast::floor_under(lo, hi);
+    this->Floor->height = bottom ? *bottom : this->Floor->height;
+    for (int c = 0; !outline.empty() && c < 4; ++c) // the board's corners
+    {
+      outline.push_back({ c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], this->Floor->height });
+    }
+  }
+  frep::render::FitOptions fit;
+  fit.view_angle_deg = self.ViewAngle;
+  fit.orthographic = self.ParallelProjection != 0;
+  const double aspect = static_cast<double>(this->Width) / this->Height;
+  this->Camera =
+    outline.empty()
+      ? frep::render::fit_box(lo, hi, aspect, self.Azimuth, self.Elevation, fit)
+      : frep::render::fit_points(outline, aspect, self.Azimuth, self.Elevation, fit, spacing);
+  if (!outline.empty())
+  {
+    // The same view with its focal point at the depth of the solid's bounds' centre (the
+    // silhouette's points are its front): a solid symmetric about it is looked at there.
+    const frep::render::CameraFrame f = frep::render::camera_frame(this->Camera);
+    double along = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      along +=
+        (0.5 * (shape.bounds->box[a].lo + shape.bounds->box[a].hi) - this->Camera.position[a]) *
+        f.forward[a];
+    }
+    for (int a = 0; along > 0.0 && a < 3; ++a)
+    {
+      this->Camera.focal_point[a] = this->Camera.position[a] + along * f.forward[a];
+    }
+  }
+  std::copy(this->Camera.position.begin(), this->Camera.position.end(), self.CameraPosition);
+  std::copy(
+    this->Camera.focal_point.begin(), this->Camera.focal_point.end(), self.CameraFocalPoint);
+  const frep::render::CameraFrame frame = frep::render::camera_frame(this->Camera);
+  std::copy(frame.up.begin(), frame.up.end(), self.CameraViewUp);
+  self.CameraParallelScale = this->Camera.orthographic ? this->Camera.parallel_scale : 0.0;
+}
 
 //------------------------------------------------------------------------------
 vtkFRepRayCaster::vtkFRepRayCaster()
@@ -79,7 +151,6 @@ int vtkFRepRayCaster::RequestInformation(vtkInformation*,
 {
   Internals& in = *this->Internal;
   in.Valid = false;
-  in.Floor.reset();
   // The object's dimension and intervals from the input's metadata keys: nothing upstream is
   // executed. No keys: an empty object, reported upstream: an empty image, quietly.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -133,30 +204,11 @@ int vtkFRepRayCaster::RequestInformation(vtkInformation*,
     }
   }
 
-  if (in.Valid)
+  // The camera needs the solid's bounds, so the tape: it is fitted in RequestData.
+  in.Width = in.Valid ? this->Width : 0;
+  in.Height = in.Valid ? this->Height : 0;
+  if (!in.Valid)
   {
-    in.Width = this->Width;
-    in.Height = this->Height;
-    frep::render::Vec3 lo{ in.Box[0], in.Box[2], in.Box[4] };
-    frep::render::Vec3 hi{ in.Box[1], in.Box[3], in.Box[5] };
-    if (this->Floor)
-    {
-      in.Floor = frep::raycast::floor_under(lo, hi);
-    }
-    frep::render::FitOptions fit;
-    fit.view_angle_deg = this->ViewAngle;
-    fit.orthographic = this->ParallelProjection != 0;
-    in.Camera = frep::render::fit_box(
-      lo, hi, static_cast<double>(in.Width) / in.Height, this->Azimuth, this->Elevation, fit);
-    std::copy(in.Camera.position.begin(), in.Camera.position.end(), this->CameraPosition);
-    std::copy(in.Camera.focal_point.begin(), in.Camera.focal_point.end(), this->CameraFocalPoint);
-    const frep::render::CameraFrame frame = frep::render::camera_frame(in.Camera);
-    std::copy(frame.up.begin(), frame.up.end(), this->CameraViewUp);
-    this->CameraParallelScale = in.Camera.orthographic ? in.Camera.parallel_scale : 0.0;
-  }
-  else
-  {
-    in.Width = in.Height = 0;
     std::fill(this->CameraPosition, this->CameraPosition + 3, 0.0);
     std::fill(this->CameraFocalPoint, this->CameraFocalPoint + 3, 0.0);
     std::fill(this->CameraViewUp, this->CameraViewUp + 3, 0.0);
@@ -240,7 +292,7 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
     return 0;
   }
   output->Initialize();
-  const Internals& in = *this->Internal;
+  Internals& in = *this->Internal;
   vtkFRepObject* object = vtkFRepObject::GetData(inputVector[0]);
   if (!in.Valid || !object || !object->HasModel())
   {
@@ -306,19 +358,9 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
     };
     // Progress comes on this thread only (raycast::render's promise): UpdateProgress is safe.
     const auto progress = [this](double fraction) { this->UpdateProgress(fraction); };
-    // The solid stands on the floor: its height is the solid's lowest point, known only now
-    // that the tape is (the camera, fitted in RequestInformation, frames the whole box).
-    std::optional<frep::raycast::Floor> floor = in.Floor;
-    if (floor)
-    {
-      if (const std::optional<double> bottom =
-            frep::raycast::lowest_z(shape, 128, this->NumberOfThreads))
-      {
-        floor->height = *bottom;
-      }
-    }
+    in.Fit(*this, shape); // the camera and the floor, now that the tape is known
     const frep::raycast::Result result = frep::raycast::render(
-      picture, in.Camera, shape, floor ? &*floor : nullptr, style, &depth, cancel, progress);
+      picture, in.Camera, shape, in.Floor ? &*in.Floor : nullptr, style, &depth, cancel, progress);
     this->Rays = result.statistics.rays;
     this->Hits = result.statistics.hits;
     if (!result.ok())
@@ -375,6 +417,7 @@ void vtkFRepRayCaster::PrintSelf(ostream& os, vtkIndent indent)
      << this->Background[2] << ", " << this->Background[3] << ")\n";
   os << indent << "Supersample: " << this->Supersample << "\n";
   os << indent << "Floor: " << (this->Floor ? "On" : "Off") << "\n";
+  os << indent << "FrameSolid: " << (this->FrameSolid ? "On" : "Off") << "\n";
   os << indent << "SelfShadows: " << (this->SelfShadows ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "CameraPosition: (" << this->CameraPosition[0] << ", " << this->CameraPosition[1]

@@ -22,14 +22,22 @@
  *   pixel takes the nearest of its samples); +infinity (IEEE) where nothing was hit, so
  *   std::isfinite / numpy.isfinite tells covered pixels from the background.
  *
- * CAMERA: the one frep::render::fit_box makes, framing the bounding sphere of the box (the box
- * widened to the floor when Floor is on) to 90 % of the picture's shorter side from the
- * direction (Azimuth, Elevation): with z up, Elevation is the angle above the xy plane and
- * Azimuth turns counter-clockwise about +z starting from -y (Azimuth 0, Elevation 0 looks along
- * +y with x to the right; 90 looks along -x). Perspective with ViewAngle, or parallel with
- * ParallelProjection. The same framing as `frepkit render --view` and the mapping's pictures.
- * The camera of the last information pass is readable (GetCameraPosition, ...), e.g. to turn
- * Depth back into world points. Model coordinates are world coordinates (no transform).
+ * CAMERA: the one frep::render::fit_box makes from the direction (Azimuth, Elevation): with z
+ * up, Elevation is the angle above the xy plane and Azimuth turns counter-clockwise about +z
+ * starting from -y (Azimuth 0, Elevation 0 looks along +y with x to the right; 90 looks along
+ * -x). It frames the solid, not the box (FrameSolid, the default): the solid as seen from
+ * that direction (frep::raycast::silhouette: 64 x 64 rays along the view over the solid's
+ * bounds in the box, frep::raycast::solid_bounds, the search the ray caster clips its rays to,
+ * done once per execution) fills 90 % of the picture's width or height (frep::render::
+ * fit_points), so a unit ball in the default box [-10, 10]^3 fills the picture as it would in a
+ * box of its own size. With FrameSolid off, or when no ray meets the solid, it frames the
+ * bounding sphere of the box (or of the solid's bounds) to 90 % of the shorter side (fit_box:
+ * with FrameSolid off the camera depends on the box only, the same for every object, e.g. over
+ * an animation). With Floor on, the floor's squares are framed too. Perspective with
+ * ViewAngle, or parallel with ParallelProjection. The camera needs the object's function, so
+ * it is fitted in the data pass; that of the last execution is readable (GetCameraPosition,
+ * ...), e.g. to turn Depth back into world points. Model coordinates are world coordinates
+ * (no transform).
  *
  * PIPELINE: RequestInformation reads the object's dimension and intervals from the
  * vtkFRepInformation keys its producer publishes (an input given as data is described from the
@@ -109,11 +117,11 @@ public:
 
   ///@{
   /**
-   * The model box (xmin, xmax, ymin, ymax, zmin, zmax) the solid is cut by and the camera
-   * frames. Default (0, -1, 0, -1, 0, -1): an axis with min > max takes the object's interval
-   * of that coordinate (the vtkFRepInformation COORDINATE_RANGES of its producer, [-10, 10]
-   * unless the source set others), as vtkFRepSampler and vtkFRepPolygonizer do. The resolved box
-   * must be finite with min < max on every axis (else an error).
+   * The model box (xmin, xmax, ymin, ymax, zmin, zmax) the solid is cut by (and the camera
+   * frames, with FrameSolid off). Default (0, -1, 0, -1, 0, -1): an axis with min > max takes the
+   * object's interval of that coordinate (the vtkFRepInformation COORDINATE_RANGES of its producer,
+   * [-10, 10] unless the source set others), as vtkFRepSampler and vtkFRepPolygonizer do. The
+   * resolved box must be finite with min < max on every axis (else an error).
    */
   vtkSetVector6Macro(ModelBounds, double);
   vtkGetVector6Macro(ModelBounds, double);
@@ -151,12 +159,23 @@ public:
   /**
    * A checkerboard floor under the shape with its shadow (default off): the plane z = the
    * solid's lowest point (raycast::lowest_z, so the shape stands on it), 8 x 8 squares over 1.6
-   * times the box's larger side in x and y, centred under the box, as `frepkit render
-   * --floor`; the camera then frames the floor too.
+   * times the framed box's larger side in x and y (the solid's bounds, or the box with
+   * FrameSolid off), centred under it, as `frepkit render --floor`; the camera then frames the
+   * floor too.
    */
   vtkSetMacro(Floor, vtkTypeBool);
   vtkGetMacro(Floor, vtkTypeBool);
   vtkBooleanMacro(Floor, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * The camera frames the solid's bounds inside the box (default on) or, off, the whole box:
+   * see CAMERA in the class description.
+   */
+  vtkSetMacro(FrameSolid, vtkTypeBool);
+  vtkGetMacro(FrameSolid, vtkTypeBool);
+  vtkBooleanMacro(FrameSolid, vtkTypeBool);
   ///@}
 
   ///@{
@@ -181,9 +200,12 @@ public:
 
   ///@{
   /**
-   * The camera of the last information pass (world = model coordinates): eye, focal point (the
-   * box's centre), view up, and for a parallel projection the world distance from the picture's
-   * centre to its top edge. All zero before a successful information pass.
+   * The camera of the last execution (world = model coordinates): eye, focal point (framing
+   * the solid: on the view axis through the middle of its outline, at the depth of the centre
+   * of its bounds — a ball's centre; framing the box: its centre), view up, and for a parallel
+   * projection the world distance from the picture's centre to its top edge. All zero before the
+   * first execution and after a refused request; an information pass alone does not fit the camera
+   * (it needs the function).
    */
   vtkGetVector3Macro(CameraPosition, double);
   vtkGetVector3Macro(CameraFocalPoint, double);
@@ -205,8 +227,8 @@ protected:
   /**
    * Defaults: Width 640, Height 480, Azimuth 35, Elevation 25, ViewAngle 30, ParallelProjection
    * off, ModelBounds (0, -1, 0, -1, 0, -1) = the object's intervals, Colour (0.85, 0.62, 0.38),
-   * Background (1, 1, 1, 1), Supersample 2, Floor off, SelfShadows off, NumberOfThreads 0 (all
-   * cores). One input port (vtkFRepObject), one output port (vtkImageData).
+   * Background (1, 1, 1, 1), Supersample 2, Floor off, FrameSolid on, SelfShadows off,
+   * NumberOfThreads 0 (all cores). One input port (vtkFRepObject), one output port (vtkImageData).
    */
   vtkFRepRayCaster();
   ~vtkFRepRayCaster() override;
@@ -227,6 +249,7 @@ protected:
   double Background[4] = { 1.0, 1.0, 1.0, 1.0 };
   int Supersample = 2;
   vtkTypeBool Floor = 0;
+  vtkTypeBool FrameSolid = 1;
   vtkTypeBool SelfShadows = 0;
   int NumberOfThreads = 0;
 

@@ -60,12 +60,13 @@ int run_map(const MapOptions& options)
 {
   using namespace map_run;
   const auto start = Clock::now();
-  const MapInputs in = load_inputs(options);
+  MapInputs in = load_inputs(options);
   const MapProducts products = choose_products(options, in.plan);
   const MapOutput out = prepare_output(options);
+  MapRecord record;
+  frame_solids(in, products, out.workers, record);
   // Ctrl-C / SIGTERM (main()'s guard) cancels: finished files are kept, temporaries removed.
   MapWorkers workers(in, products, out.workers, options.quiet);
-  MapRecord record;
   if (products.spreadsheet)
   {
     render_spreadsheet(in, workers, out.directory, record);

@@ -35,8 +35,8 @@ std::string shape_file_bytes(const std::string& spec)
 }
 
 // What the frames depend on: a frame on disk is reused only when the model, the mapping, the
-// overrides and the user's libraries and shapes (their files' contents) are the ones it was
-// rendered with.
+// overrides, the user's libraries and shapes (their files' contents) and the framing rule are
+// the ones it was rendered with.
 std::string fingerprint(const std::string& model_text,
   const std::string& mapping_text,
   const MapOptions& options)
@@ -58,6 +58,8 @@ std::string fingerprint(const std::string& model_text,
     key << '\0' << shape << '\0' << shape_file_bytes(shape);
   }
   key << '\0' << options.user.unsigned_distance;
+  // The framing rule: frames of an older rule (the model box's) must not be kept beside new ones.
+  key << '\0' << "framing: the solids' box";
   char hex[32];
   std::snprintf(hex, sizeof hex, "%016zx", std::hash<std::string>{}(key.str()));
   return hex;
@@ -157,9 +159,10 @@ void render_frames(const MapOptions& options,
   // The paper's Fig. 8 (render.scene "floor"): the shape travels over the dynamic plane.
   const bool on_floor = render.scene == mapping::RenderSettings::Scene::Floor;
   const mapping::FloorScene scene =
-    on_floor ? mapping::make_floor_scene(plan, in.spec, aspect) : mapping::FloorScene{};
+    on_floor ? mapping::make_floor_scene(plan, in.spec, aspect, in.framing) : mapping::FloorScene{};
   const frep::render::Camera camera =
-    on_floor ? scene.camera : mapping::plan_camera(plan, render, aspect);
+    on_floor ? scene.camera
+             : mapping::frame_camera(plan, render, render.width, render.height, in.framing);
   std::atomic<std::size_t> reused_count{ 0 };
   Ledger frame_ledger;
   workers.parallel(plan.frames.size(),

@@ -1,6 +1,8 @@
-// frepkit map, phases 1-3: the inputs (mapping, model, plan), the products, the output place.
+// frepkit map, phases 1-4: the inputs (mapping, model, plan), the products, the output place,
+// the framing.
 #include "map_phases.h"
 
+#include "interrupt_guard.h"
 #include "model_loading.h"
 #include "user_error.h"
 
@@ -132,6 +134,23 @@ MapProducts choose_products(const MapOptions& options, const mapping::Plan& plan
                     "neither)");
   }
   return p;
+}
+
+void frame_solids(MapInputs& in, const MapProducts& products, int workers, MapRecord& record)
+{
+  if (!(products.spreadsheet || products.shape || products.frames) || in.spec.render.view_box)
+  {
+    return;
+  }
+  const auto t0 = Clock::now();
+  frep::ThreadPool pool(workers);
+  in.framing = mapping::frame_solids(in.spec.render, *in.model, in.parameters, in.plan, &pool);
+  InterruptGuard::throw_if_interrupted();
+  const std::size_t samples = 1 + in.plan.cells.size() + in.plan.frames.size();
+  record.stages.push_back({ "framing",
+    seconds_since(t0),
+    std::to_string(samples) + " solids seen from the view" +
+      (in.framing.empty() ? std::string(": none in the model box") : std::string()) });
 }
 
 MapOutput prepare_output(const MapOptions& options)

@@ -2,10 +2,11 @@
 //   1. inputs   (map_inputs.cpp)   the mapping file and the model, checked, and the plan;
 //   2. products (map_inputs.cpp)   what --only and the plan ask for;
 //   3. output   (map_inputs.cpp)   the output directory, the files' stem, the worker count;
-//   4. pictures (map_pictures.cpp) the spreadsheet, the shape alone, the path;
-//   5. frames   (map_frames.cpp)   the animation frames, resumable (fingerprint);
-//   6. media    (map_media.cpp)    the sound track and the movie;
-//   7. manifest (map_manifest.cpp) manifest.json and the summary on standard error.
+//   4. framing  (map_inputs.cpp)   the box every picture frames: the solids' (Scene/framing.h);
+//   5. pictures (map_pictures.cpp) the spreadsheet, the shape alone, the path;
+//   6. frames   (map_frames.cpp)   the animation frames, resumable (fingerprint);
+//   7. media    (map_media.cpp)    the sound track and the movie;
+//   8. manifest (map_manifest.cpp) manifest.json and the summary on standard error.
 // The rendering phases share a MapWorkers (map_workers.cpp: per-worker picture kits and pools,
 // the progress bar, the meshing counters) and report into a MapRecord (the manifest's file
 // entries and the stages' times). Problems are thrown as UserError.
@@ -18,6 +19,7 @@
 #include "Plan/mapping_spec.h"
 #include "Render/image.h"
 #include "Scene/floor_scene.h"
+#include "Scene/framing.h"
 #include "Scene/pictures.h"
 #include "Scene/section_mesh.h"
 #include "Scene/section_raycast.h"
@@ -56,7 +58,7 @@ void write_text_file(const fs::path& path, const std::string& text);
 /// A sample's label and its values by coordinate name (NaN values left out), for the manifest.
 nlohmann::json sample_json(const mapping::Sample& s, const std::vector<std::string>& names);
 
-// --- 1-3: inputs, products, output ----------------------------------------------------------
+// --- 1-4: inputs, products, output, framing ------------------------------------------------
 
 struct MapInputs
 {
@@ -66,6 +68,8 @@ struct MapInputs
   std::vector<double> parameters; ///< --parameters, else the mapping's
   mapping::ModelCoordinates coordinates;
   mapping::Plan plan;
+  /// What the one camera of the cells and frames frames (phase 4); empty: the plan's box.
+  mapping::Framing framing;
 };
 
 /// Every problem of the mapping, the model and the plan is reported before anything is written.
@@ -92,6 +96,14 @@ struct MapOutput
 };
 
 MapOutput prepare_output(const MapOptions& options);
+
+struct MapRecord;
+
+/// When the products draw sections (spreadsheet, shape, frames) and the mapping gives no
+/// render.view_box: the framing of the solids of every cell and frame (mapping::frame_solids,
+/// on `workers` threads), so one camera frames the shapes, not the model box; its time is the
+/// record's "framing" stage.
+void frame_solids(MapInputs& in, const MapProducts& products, int workers, MapRecord& record);
 
 // --- what the rendering phases share -------------------------------------------------------
 
@@ -178,7 +190,7 @@ private:
   std::atomic<std::size_t> triangles_{ 0 };
 };
 
-// --- 4-7: the products ----------------------------------------------------------------------
+// --- 5-8: the products ----------------------------------------------------------------------
 
 /// spreadsheet.png: every cell with one camera, composed with labels.
 void render_spreadsheet(const MapInputs& in,

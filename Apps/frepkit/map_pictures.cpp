@@ -45,7 +45,7 @@ void render_spreadsheet(const MapInputs& in,
   const mapping::Plan& plan = in.plan;
   const mapping::Spec& spec = in.spec;
   const int cell_px = spec.spreadsheet.cell_size;
-  const frep::render::Camera camera = mapping::plan_camera(plan, spec.render, 1.0);
+  const frep::render::Camera camera = mapping::plan_camera(plan, spec.render, 1.0, in.framing);
   std::vector<frep::render::Image> pictures(plan.cells.size());
   Ledger cell_ledger;
   workers.parallel(plan.cells.size(),
@@ -75,8 +75,8 @@ void render_shape(const MapInputs& in,
   const auto t0 = Clock::now();
   const mapping::Plan& plan = in.plan;
   const mapping::RenderSettings& render = in.spec.render;
-  const frep::render::Camera camera =
-    mapping::plan_camera(plan, render, static_cast<double>(render.width) / render.height);
+  const frep::render::Camera camera = mapping::plan_camera(
+    plan, render, static_cast<double>(render.width) / render.height, in.framing);
   const MapWorkers::Picture p =
     workers.picture(render.method, plan.still, camera, render.width, render.height, 0, workers.count());
   write_png_file(out_dir / "shape.png", p.image);

@@ -166,8 +166,8 @@ MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
     mapping::stand_on_floor(s, *floor); // the mesh's lowest vertex on the board
   }
   const auto t1 = std::chrono::steady_clock::now();
-  p.image =
-    mapping::render_sample(inputs_.plan, s, sample, camera, width, height, settings, threads, floor);
+  p.image = mapping::render_sample(
+    inputs_.plan, s, sample, camera, width, height, settings, threads, floor, inputs_.framing);
   p.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
   p.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   p.triangles = s.surface.cell_count();

@@ -6,6 +6,7 @@
 //   build/bin/frep_example_multimedia_mapping Examples/mapping/morph4d.hf spreadsheet.ppm
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
+#include "Scene/framing.h"
 #include "Scene/pictures.h"
 #include "Scene/section_mesh.h"
 
@@ -72,9 +73,11 @@ int main(int argc, char** argv)
   }
   const fm::Plan& plan = planned.plan;
 
-  // 3. Each cell: the model cut at its x4 (a 3-D tape), meshed, measured and drawn.
+  // 3. Each cell: the model cut at its x4 (a 3-D tape), meshed, measured and drawn, with one
+  // camera framing the solids of all cells (not the model box).
   fm::PictureKit kit;
-  const frep::render::Camera camera = fm::plan_camera(plan, spec.render, 1.0);
+  const fm::Framing framing = fm::frame_solids(spec.render, model, {}, plan);
+  const frep::render::Camera camera = fm::plan_camera(plan, spec.render, 1.0, framing);
   std::vector<frep::render::Image> pictures;
   for (const fm::Sample& cell : plan.cells)
   {

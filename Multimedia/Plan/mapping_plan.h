@@ -129,6 +129,11 @@ struct PlanResult
 /// that follows "the ray caster").
 bool world_is_affine(const Plan& plan, std::string* why = nullptr);
 
+/// The bounding box in world space of the region a box of axis values maps onto in the
+/// cylindrical (r, phi, z) or spherical (r, theta, phi) system, angles in radians: the extremes
+/// lie at the ends and at the multiples of pi/2 of each angle's interval.
+std::array<Interval, 3> curvilinear_box(WorldSystem system, const std::array<Interval, 3>& axes);
+
 /// Resolves `spec` against the model's coordinates: every coordinate must be mapped (world,
 /// dynamic, spreadsheet or fixed), world axes distinct and 2 or 3 of them, ranges of non-zero
 /// width, frames >= 1, a path with >= 2 points over exactly the dynamic coordinates, ...

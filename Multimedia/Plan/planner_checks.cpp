@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
 namespace frep::mapping::planning
 {
@@ -21,60 +19,6 @@ const char* axis_name(WorldSystem system, int axis)
     { "x", "y", "z" }, { "r", "phi", "z" }, { "r", "theta", "phi" }
   };
   return names[static_cast<int>(system)][std::clamp(axis, 0, 2)];
-}
-
-// Multiples of pi/2 inside [lo, hi] (at most one period's worth: the rest repeat), where sin
-// and cos take their extremes.
-std::vector<double> critical_angles(double lo, double hi)
-{
-  std::vector<double> angles{ lo, hi };
-  const double quarter = std::numbers::pi / 2;
-  const double first = std::ceil(std::min(lo, hi) / quarter);
-  for (int k = 0; k < 4; ++k)
-  {
-    const double a = (first + k) * quarter;
-    if (a <= std::max(lo, hi))
-    {
-      angles.push_back(a);
-    }
-  }
-  return angles;
-}
-
-// The bounding box of the world region a box of (r, angle, ...) maps onto.
-std::array<Interval, 3> curvilinear_box(WorldSystem system, const std::array<Interval, 3>& w)
-{
-  std::array<double, 3> lo;
-  std::array<double, 3> hi;
-  lo.fill(std::numeric_limits<double>::infinity());
-  hi.fill(-std::numeric_limits<double>::infinity());
-  auto add = [&](double x, double y, double z)
-  {
-    const double p[3] = { x, y, z };
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  };
-  const double rs[2] = { w[0].lo, w[0].hi };
-  if (system == WorldSystem::Cylindrical)
-  {
-    for (double r : rs)
-      for (double phi : critical_angles(w[1].lo, w[1].hi))
-        for (double z : { w[2].lo, w[2].hi })
-          add(r * std::cos(phi), r * std::sin(phi), z);
-  }
-  else
-  {
-    for (double r : rs)
-      for (double theta : critical_angles(w[1].lo, w[1].hi))
-        for (double phi : critical_angles(w[2].lo, w[2].hi))
-          add(r * std::sin(theta) * std::cos(phi),
-            r * std::sin(theta) * std::sin(phi),
-            r * std::cos(theta));
-  }
-  return { Interval{ lo[0], hi[0] }, Interval{ lo[1], hi[1] }, Interval{ lo[2], hi[2] } };
 }
 
 } // namespace

@@ -1,9 +1,8 @@
-// raycast::lowest_z: where a solid meets a floor under it. Found by the ray caster itself (rays
-// cast straight up, their first hits), so the point is the one the pictures draw: the same root
-// search, the same caps where the box cuts the solid.
+// What a scene asks the ray caster about a solid: raycast::lowest_z, where it meets a floor under
+// it (rays cast straight up), and raycast::silhouette, what a camera must see to frame it (rays
+// cast along the view). Found by the ray caster itself, from its first hits, so the points are
+// the ones the pictures draw: the same root search, the same caps where the box cuts the solid.
 #include "Raycast/raycast.h"
-
-#include "Mesh/solid_bounds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,22 +60,13 @@ std::optional<LowestHit> look_up(const Shape& shape,
     cy + a * frame.right[1] + b * frame.up[1] };
 }
 
-} // namespace
-
-std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
+// The world box of the solid's bounds (the map is affine: the hull of its eight corners).
+void world_box(const Shape& shape,
+  const mesh::SolidBounds& bounds,
+  std::array<double, 3>& lo,
+  std::array<double, 3>& hi)
 {
-  if (!shape.tape || shape.tape->input_count != 3 || pixels < 2)
-  {
-    return std::nullopt;
-  }
-  const mesh::SolidBounds bounds = mesh::solid_bounds_in(shape.tape, shape.box, 4);
-  if (!bounds.bounded())
-  {
-    return std::nullopt;
-  }
-  // The world box of the solid's model box (the map is affine: the hull of its corners).
   const std::array<double, 12>& m = shape.to_world;
-  std::array<double, 3> lo, hi;
   lo.fill(std::numeric_limits<double>::infinity());
   hi.fill(-std::numeric_limits<double>::infinity());
   for (int c = 0; c < 8; ++c)
@@ -91,11 +81,30 @@ std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
       hi[r] = std::max(hi[r], w);
     }
   }
+}
+
+} // namespace
+
+std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
+{
+  if (!shape.tape || shape.tape->input_count != 3 || pixels < 2)
+  {
+    return std::nullopt;
+  }
+  const mesh::SolidBounds bounds =
+    shape.bounds ? *shape.bounds : solid_bounds(shape.tape, shape.box);
+  if (!bounds.bounded())
+  {
+    return std::nullopt;
+  }
+  std::array<double, 3> lo, hi;
+  world_box(shape, bounds, lo, hi);
   const double half = 0.51 * std::max({ hi[0] - lo[0], hi[1] - lo[1], 1e-9 });
   const double below = lo[2] - 0.01 * std::max(hi[2] - lo[2], 2.0 * half) - 1e-9;
   Shape solid = shape; // drawn plain: only the depth is read
   solid.colour_function = {};
   solid.opacity = 1.0;
+  solid.bounds = bounds; // both look-ups clip to the bounds found here
   const std::optional<LowestHit> coarse = look_up(
     solid, 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), half, below, pixels, threads);
   if (!coarse)
@@ -108,6 +117,85 @@ std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
   const std::optional<LowestHit> fine =
     look_up(solid, coarse->x, coarse->y, 2.0 * coarse_step, below, pixels, threads);
   return fine ? std::min(coarse->z, fine->z) : coarse->z;
+}
+
+Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int pixels, int threads)
+{
+  Silhouette result;
+  if (!shape.tape || shape.tape->input_count != 3 || pixels < 2)
+  {
+    return result;
+  }
+  const mesh::SolidBounds bounds =
+    shape.bounds ? *shape.bounds : solid_bounds(shape.tape, shape.box);
+  if (!bounds.bounded())
+  {
+    return result;
+  }
+  // The solid's world box in the view's coordinates: the picture covers its corners.
+  std::array<double, 3> lo, hi;
+  world_box(shape, bounds, lo, hi);
+  const std::array<const render::Vec3*, 3> axes{ &view.right, &view.up, &view.forward };
+  std::array<double, 3> vlo, vhi;
+  vlo.fill(std::numeric_limits<double>::infinity());
+  vhi.fill(-std::numeric_limits<double>::infinity());
+  for (int c = 0; c < 8; ++c)
+  {
+    const render::Vec3 p{ c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      const render::Vec3& a = *axes[k];
+      const double v = a[0] * p[0] + a[1] * p[1] + a[2] * p[2];
+      vlo[k] = std::min(vlo[k], v);
+      vhi[k] = std::max(vhi[k], v);
+    }
+  }
+  const double half = 0.5 * std::max({ vhi[0] - vlo[0], vhi[1] - vlo[1], 1e-9 });
+  const double a0 = 0.5 * (vlo[0] + vhi[0]), b0 = 0.5 * (vlo[1] + vhi[1]);
+  const double front = vlo[2] - 0.01 * std::max(vhi[2] - vlo[2], 2.0 * half) - 1e-9;
+  render::Camera camera;
+  for (int k = 0; k < 3; ++k)
+  {
+    camera.position[k] = a0 * view.right[k] + b0 * view.up[k] + front * view.forward[k];
+    camera.focal_point[k] = camera.position[k] + half * view.forward[k];
+  }
+  camera.view_up = view.up;
+  camera.orthographic = true;
+  camera.parallel_scale = half;
+  camera.near_distance = 1e-6 * half;
+  Shape solid = shape; // drawn plain: only the depth is read
+  solid.colour_function = {};
+  solid.opacity = 1.0;
+  solid.bounds = bounds;
+  Style style;
+  style.render.supersample = 1;
+  style.render.threads = threads;
+  render::Image picture(pixels, pixels);
+  std::vector<float> depth;
+  if (!render(picture, camera, solid, nullptr, style, &depth).ok())
+  {
+    return result;
+  }
+  // Each hit's world point: the pixel's ray (rows run top down) at its depth.
+  const render::CameraFrame frame = render::camera_frame(camera);
+  result.spacing = 2.0 * half / pixels;
+  for (std::size_t i = 0; i < depth.size(); ++i)
+  {
+    if (!std::isfinite(depth[i]))
+    {
+      continue;
+    }
+    const double a = (static_cast<double>(i % pixels) + 0.5) * result.spacing - half;
+    const double b = half - (static_cast<double>(i / pixels) + 0.5) * result.spacing;
+    render::Vec3 p;
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] =
+        camera.position[k] + a * frame.right[k] + b * frame.up[k] + depth[i] * frame.forward[k];
+    }
+    result.points.push_back(p);
+  }
+  return result;
 }
 
 } // namespace frep::raycast

@@ -531,6 +531,23 @@ private:
 
 } // namespace
 
+mesh::SolidBounds solid_bounds(const std::shared_ptr<const Tape>& tape,
+  std::span<const Interval> box)
+{
+  // Two passes of 1/16: the second looks only where the first found the solid, so it costs
+  // about as much as the first, where one pass of 1/256 would split every cell near the surface.
+  mesh::SolidBounds coarse = mesh::solid_bounds_in(tape, box, 4);
+  if (!coarse.bounded())
+  {
+    return coarse;
+  }
+  mesh::SolidBounds fine = mesh::solid_bounds_in(tape, coarse.box, 4);
+  fine.interval_evaluations += coarse.interval_evaluations;
+  fine.seconds += coarse.seconds;
+  // A sound enclosure finds the solid again inside its own bounds; keep the coarse box if not.
+  return fine.bounded() ? fine : coarse;
+}
+
 Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi)
 {
   const double span = 1.6 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
@@ -583,8 +600,9 @@ Result render(render::Image& target,
     c.floor_index.emplace(*floor);
   }
   ThreadPool pool(style.render.threads);
-  // Rays clip to the solid's bounds in the box (Mesh/solid_bounds.h, to 1/16 of the box).
-  const mesh::SolidBounds bounds = mesh::solid_bounds_in(shape.tape, shape.box, 4);
+  // Rays clip to the solid's bounds in the box (solid_bounds: to 1/256 of the box).
+  const mesh::SolidBounds bounds =
+    shape.bounds ? *shape.bounds : solid_bounds(shape.tape, shape.box);
   result.statistics.interval_evaluations += bounds.interval_evaluations;
   // With nothing inside the box, rays search an empty box outside it (none enters).
   const std::array<Interval, 3> clip = bounds.bounded()

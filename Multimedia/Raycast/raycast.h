@@ -35,6 +35,7 @@
 
 #include "Compiler/tape.h"
 #include "Eval/interval.h"
+#include "Mesh/solid_bounds.h"
 
 #include <array>
 #include <cstddef>
@@ -72,7 +73,19 @@ struct Shape
   std::array<float, 3> colour{ 0.8F, 0.8F, 0.8F }; ///< linear; when `colour_function` is empty
   ColourFunction colour_function;
   double opacity = 1.0; ///< 0..1: composited over what is behind (back surfaces are not seen)
+  /// The solid's bounds inside `box` when the caller has them already (solid_bounds(tape, box),
+  /// e.g. to fit a camera first): render and lowest_z then use them instead of searching again.
+  /// They must come from this tape and box. Empty: render and lowest_z search themselves.
+  std::optional<mesh::SolidBounds> bounds;
 };
+
+/// The bounds of the solid {F >= 0} inside `box` (one interval per tape input), as the ray
+/// caster clips its rays and frames its shadow map and lowest_z to them, and as cameras frame
+/// solids: Mesh/solid_bounds.h's solid_bounds_in to 1/16 of `box` on each axis, then once more
+/// over the box found (so to 1/256 of `box`; no margin). Bounded or Empty; throws
+/// std::invalid_argument as solid_bounds_in does (no tape, a box of another size).
+mesh::SolidBounds solid_bounds(const std::shared_ptr<const Tape>& tape,
+  std::span<const Interval> box);
 
 /// A checkerboard floor: the plane z = height of the world, squares of `square` world units
 /// starting at `origin`, `columns` x `rows` of them (the rest of the plane is not drawn), with
@@ -105,6 +118,22 @@ Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi);
 /// bottom's lowest ray); a part thinner than a ray's spacing can be missed, as in any picture.
 /// Empty when no ray meets the solid. `threads` as Style's (0 = all cores).
 std::optional<double> lowest_z(const Shape& shape, int pixels = 128, int threads = 1);
+
+/// What a camera looking along `view.forward` must see to see the whole of `shape`'s solid: the
+/// first hit of each ray of an orthographic picture of `pixels` x `pixels` rays along
+/// view.forward (view.up up) covering the solid's bounds (solid_bounds). A camera looking
+/// along that direction, perspective or not, that sees these points sees the solid: at each
+/// place of the picture the nearest point limits it. To within `spacing`, the distance between
+/// neighbouring rays (widen by it); a part thinner than that may be missed, as in any picture.
+struct Silhouette
+{
+  std::vector<render::Vec3> points; ///< world points; empty when no ray meets the solid
+  double spacing = 0.0;             ///< world units between neighbouring rays
+};
+Silhouette silhouette(const Shape& shape,
+  const render::CameraFrame& view,
+  int pixels = 48,
+  int threads = 1);
 
 struct Style
 {

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 namespace frep::render
 {
@@ -132,6 +134,111 @@ Camera fit_box(const Vec3& lo,
   };
   // Far in front of the bounding sphere (the depth buffer holds 1 / depth in floats, so a small
   // near distance costs no precision): meshes that stray outside the box are still drawn.
+  camera.near_distance = 0.01 * distance;
+  return camera;
+}
+
+CameraFrame view_frame(double azimuth_deg, double elevation_deg)
+{
+  return camera_frame(
+    fit_box({ -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 }, 1.0, azimuth_deg, elevation_deg));
+}
+
+Camera fit_points(std::span<const Vec3> points,
+  double aspect,
+  double azimuth_deg,
+  double elevation_deg,
+  const FitOptions& options,
+  double margin)
+{
+  FitOptions oriented = options;
+  oriented.fit_corners = false;
+  // fit_box orients the camera (view up continuous through the poles) and sets the projection.
+  Camera camera =
+    fit_box({ -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 }, aspect, azimuth_deg, elevation_deg, oriented);
+  const CameraFrame f = camera_frame(camera);
+  // The points in the view's coordinates (right, up, forward), and their extent.
+  std::vector<Vec3> view;
+  view.reserve(points.size());
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo{ inf, inf, inf }, hi{ -inf, -inf, -inf };
+  for (const Vec3& p : points)
+  {
+    const Vec3 v{ dot(p, f.right), dot(p, f.up), dot(p, f.forward) };
+    if (std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]))
+    {
+      view.push_back(v);
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], v[k]);
+        hi[k] = std::max(hi[k], v[k]);
+      }
+    }
+  }
+  if (!(lo[0] <= hi[0]))
+  {
+    return camera; // no finite point: the unit sphere at the origin
+  }
+  margin = std::isfinite(margin) ? std::max(margin, 0.0) : 0.0;
+  aspect = aspect > 0.0 && std::isfinite(aspect) ? aspect : 1.0;
+  const double fill = std::clamp(options.fill, 0.05, 1.0);
+  const Vec3 c{ 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
+  const Vec3 half{
+    0.5 * (hi[0] - lo[0]) + margin, 0.5 * (hi[1] - lo[1]) + margin, 0.5 * (hi[2] - lo[2])
+  };
+  const double size = std::max({ half[0], half[1], half[2] });
+  if (!(size > 1e-12 * std::max({ std::abs(c[0]), std::abs(c[1]), std::abs(c[2]), 1.0 })))
+  {
+    const Vec3 at{ c[0] * f.right[0] + c[1] * f.up[0] + c[2] * f.forward[0],
+      c[0] * f.right[1] + c[1] * f.up[1] + c[2] * f.forward[1],
+      c[0] * f.right[2] + c[1] * f.up[2] + c[2] * f.forward[2] };
+    return fit_box(at, at, aspect, azimuth_deg, elevation_deg, oriented); // one place only
+  }
+  // The eye at (sx, sy, e) in the view's coordinates, looking along +forward. The picture spans
+  // -1..1 of its half height up; the points go into the window over the free bottom band,
+  // shrunk by the fill about its centre: from -lower to upper.
+  const double band = std::clamp(options.free_bottom, 0.0, 0.5);
+  const double upper = band + fill * (1.0 - band), lower = fill * (1.0 - band) - band;
+  double sx = c[0], sy = c[1], e = 0.0;
+  if (camera.orthographic)
+  {
+    camera.parallel_scale = std::max(half[1] / (fill * (1.0 - band)), half[0] / (fill * aspect));
+    sy = c[1] - band * camera.parallel_scale; // the points' middle at the window's middle
+    e = lo[2] - 2.0 * size;
+  }
+  else
+  {
+    // A point is seen when v - s + margin <= up (z - e) and s - v + margin <= down (z - e) on
+    // each axis (up, down: the window's sides over the focal length): s between
+    // max(v + margin - up z) + up e and min(v - margin + down z) - down e. The nearest eye has
+    // the two meet on one axis, where the points nearer the eye and those farther away both
+    // reach the window (perspective: the axis does not go through the middle of the extent).
+    const double tan_v = std::tan(0.5 * camera.view_angle_deg * kDegree);
+    const std::array<double, 2> up{ fill * tan_v * aspect, upper * tan_v };
+    const std::array<double, 2> down{ fill * tan_v * aspect, lower * tan_v };
+    std::array<double, 2> most{}, least{};
+    e = lo[2] - 1e-6 * size; // every point in front of the eye
+    for (int a = 0; a < 2; ++a)
+    {
+      most[a] = -inf;
+      least[a] = inf;
+      for (const Vec3& v : view)
+      {
+        most[a] = std::max(most[a], v[a] + margin - up[a] * v[2]);
+        least[a] = std::min(least[a], v[a] - margin + down[a] * v[2]);
+      }
+      e = std::min(e, (least[a] - most[a]) / (up[a] + down[a]));
+    }
+    sx = 0.5 * (most[0] + up[0] * e + least[0] - down[0] * e);
+    sy = 0.5 * (most[1] + up[1] * e + least[1] - down[1] * e);
+  }
+  const double distance = c[2] - e;
+  const Vec3 focus{ sx, sy, c[2] };
+  for (int k = 0; k < 3; ++k)
+  {
+    camera.focal_point[k] = focus[0] * f.right[k] + focus[1] * f.up[k] + focus[2] * f.forward[k];
+    camera.position[k] = camera.focal_point[k] - distance * f.forward[k];
+  }
   camera.near_distance = 0.01 * distance;
   return camera;
 }

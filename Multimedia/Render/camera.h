@@ -1,10 +1,12 @@
 // The camera of the headless renderer: where the eye is, what it looks at, and how the view is
-// projected onto the picture. `fit_box` builds one camera for a whole spreadsheet or animation
-// from the world-space box every shape lives in, so all cells and frames are framed alike and
-// shapes stay comparable.
+// projected onto the picture. `fit_box` frames a box (its bounding sphere or its corners),
+// `fit_points` the outline of points (a solid seen from the camera's direction): one camera for
+// a whole spreadsheet or animation, so all cells and frames are framed alike and shapes stay
+// comparable.
 #pragma once
 
 #include <array>
+#include <span>
 
 namespace frep::render
 {
@@ -48,6 +50,9 @@ struct FitOptions
   /// largest depth towards it (so no corner leaves the picture). Tighter for boxes fitted to a
   /// solid, where the box's sphere leaves a round shape less than half the picture.
   bool fit_corners = false;
+  /// fit_points only: this fraction of the picture's height (0..0.5) is kept free at the
+  /// bottom (a caption's band); the fill applies to the rest.
+  double free_bottom = 0.0;
 };
 
 /// A camera looking at the centre of the box [lo, hi] from the direction (azimuth, elevation),
@@ -62,5 +67,27 @@ Camera fit_box(const Vec3& lo,
   double azimuth_deg,
   double elevation_deg,
   const FitOptions& options = {});
+
+/// The camera's frame (right, up, forward) for the direction (azimuth, elevation), as fit_box
+/// orients its cameras.
+CameraFrame view_frame(double azimuth_deg, double elevation_deg);
+
+/// The nearest camera looking from (azimuth, elevation) (fit_box's directions and view up) that
+/// sees every point within `fill` of the picture's half width and of its half height (width /
+/// height = aspect): the points' own outline frames the picture, not a sphere or a box around
+/// them, so a round solid given by points on it fills the picture where its box's corners seen
+/// obliquely would leave it half as wide. Perspective (the view axis shifted so that the points
+/// nearer the eye and those farther away both reach the fill, on each axis of the picture) or
+/// orthographic (centred on the points' extent), by `options` (fit_corners does not apply). The
+/// focal point is on the view axis at the middle of the points' depths. `margin` (world units)
+/// widens every point across the view (e.g. by the spacing of the rays that found them). Non-finite
+/// points are skipped; with none, fit_box's unit sphere at the origin; with one place only,
+/// fit_box's unit sphere there.
+Camera fit_points(std::span<const Vec3> points,
+  double aspect,
+  double azimuth_deg,
+  double elevation_deg,
+  const FitOptions& options = {},
+  double margin = 0.0);
 
 } // namespace frep::render

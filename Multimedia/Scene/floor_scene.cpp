@@ -57,7 +57,10 @@ std::array<double, 3> squares_along(const Spec& spec, const std::string& name, I
 
 } // namespace
 
-FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
+FloorScene make_floor_scene(const Plan& plan,
+  const Spec& spec,
+  double aspect,
+  const Framing& framing)
 {
   FloorScene scene;
   if (plan.dynamic_coordinates.size() != 2)
@@ -65,11 +68,12 @@ FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
     return scene;
   }
   const RenderSettings& settings = spec.render;
+  const std::array<Interval, 3> shown = shown_box(plan, settings, framing);
   std::array<double, 3> lo, hi;
   for (int k = 0; k < 3; ++k)
   {
-    lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
-    hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
+    lo[k] = shown[k].lo;
+    hi[k] = shown[k].hi;
   }
   // One square of the board is about half the shape's box: the shape stands out over the
   // board yet the board is large enough to read as the spreadsheet laid flat.
@@ -100,14 +104,42 @@ FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect)
   // The shape's box stands on the floor by its bottom centre.
   scene.shape_anchor = { 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), lo[2] };
 
-  const double height = hi[2] - lo[2];
-  const std::array<double, 3> board_lo{ f.origin[0], f.origin[1], f.height };
-  const std::array<double, 3> board_hi{
-    f.origin[0] + columns * world_square, f.origin[1] + rows * world_square, f.height + height
-  };
-  scene.camera =
-    box_camera(board_lo, board_hi, aspect, settings.azimuth, std::max(settings.elevation, 30.0));
+  // The camera sees the board and each frame's shape where it stands (its solid's box when the
+  // framing has it, else the shape's box; not one box over the whole board, which leaves the sky
+  // over the board's far corners empty).
+  std::vector<render::Vec3> seen;
+  for (int c = 0; c < 4; ++c)
+  {
+    seen.push_back({ f.origin[0] + (c & 1 ? columns * world_square : 0.0),
+      f.origin[1] + (c & 2 ? rows * world_square : 0.0),
+      f.height });
+  }
   scene.ok = true;
+  const bool own = framing.frames.size() == plan.frames.size() && !settings.view_box;
+  for (std::size_t k = 0; k < plan.frames.size(); ++k)
+  {
+    const Sample& frame = plan.frames[k];
+    if (own && !framing.frames[k])
+    {
+      continue; // no solid in this frame
+    }
+    const std::array<Interval, 3> b =
+      own ? *framing.frames[k] : std::array<Interval, 3>{ shown[0], shown[1], shown[2] };
+    // on_floor's move, and stand_on_floor's: the solid's bottom on the board.
+    const std::array<double, 16> m = on_floor(scene, frame).transform;
+    const double dx = m[3] - frame.transform[3], dy = m[7] - frame.transform[7];
+    for (int c = 0; c < 8; ++c)
+    {
+      seen.push_back({ (c & 1 ? b[0].hi : b[0].lo) + dx,
+        (c & 2 ? b[1].hi : b[1].lo) + dy,
+        f.height + (c & 4 ? b[2].hi - b[2].lo : 0.0) });
+    }
+  }
+  render::FitOptions fit;
+  fit.fill = 0.92;
+  fit.free_bottom = caption_band(spec.render.height); // the frames' caption
+  scene.camera =
+    render::fit_points(seen, aspect, settings.azimuth, std::max(settings.elevation, 30.0), fit);
   return scene;
 }
 

@@ -11,6 +11,7 @@
 
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
+#include "Scene/framing.h"
 #include "Scene/section_mesh.h"
 
 #include "Raycast/raycast.h"
@@ -33,8 +34,15 @@ struct FloorScene
 
 /// The scene of every frame of `plan` (one camera: `settings` azimuth, and its elevation raised
 /// to at least 30 degrees so the board is seen from above), for pictures of width / height =
-/// aspect.
-FloorScene make_floor_scene(const Plan& plan, const Spec& spec, double aspect);
+/// aspect. The shape's box — what sizes the board (a square is 0.55 of its larger side) and
+/// stands on it — is the shown box (shown_box: the render settings' view_box, else the
+/// framing's box of the solids, else the plan's world box); the camera fits the board's
+/// corners and, at each frame's point, that frame's solid's box (the framing's) or the shape's
+/// box, standing on the board, within 92% of the picture over the caption's band.
+FloorScene make_floor_scene(const Plan& plan,
+  const Spec& spec,
+  double aspect,
+  const Framing& framing = {});
 
 /// `frame` moved over its dynamic point on the floor, the bottom of its shape box on the board:
 /// the frame's transform followed by the translation to that point. stand_on_floor then puts

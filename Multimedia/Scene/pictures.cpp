@@ -31,13 +31,12 @@ render::Font* font_of(PictureKit* kit)
   return kit && kit->font ? &*kit->font : nullptr;
 }
 
-// A 2-D section (segments in z = 0): the world box's x/y fitted into the picture.
+// A 2-D section (segments in z = 0): the shown box's x/y fitted into the picture.
 void draw_contour(render::Image& image,
-  const Plan& plan,
+  const std::array<Interval, 3>& box,
   const Section& section,
   const Sample& sample)
 {
-  const auto& box = plan.world_box;
   const double w = std::max(box[0].hi - box[0].lo, 1e-300),
                h = std::max(box[1].hi - box[1].lo, 1e-300);
   const double scale = 0.9 * std::min(image.width / w, image.height / h);
@@ -54,6 +53,42 @@ void draw_contour(render::Image& image,
       { ox + scale * s.points[3 * b], oy - scale * s.points[3 * b + 1] } };
     render::draw_polyline(image, line, width, colour);
   }
+}
+
+// decorate_frame's caption: its text size and its baseline's height above the bottom, pixels.
+double caption_px(int height)
+{
+  return std::max(12.0, height / 34.0);
+}
+double caption_lift(int height)
+{
+  return 0.03 * height;
+}
+
+// The camera of plan_camera and frame_camera, `band` of the height kept free at the bottom.
+render::Camera fitted(const Plan& plan,
+  const RenderSettings& settings,
+  double aspect,
+  const Framing& framing,
+  double band)
+{
+  render::FitOptions fit;
+  fit.fill = 0.92;
+  fit.free_bottom = band;
+  if (!settings.view_box && !framing.outline.empty())
+  {
+    return render::fit_points(framing.outline, aspect, settings.azimuth, settings.elevation, fit);
+  }
+  // The box's eight corners, not its bounding sphere (up to sqrt(3) wider), fill the picture.
+  const std::array<Interval, 3> box = shown_box(plan, settings);
+  std::array<render::Vec3, 8> corners;
+  for (int c = 0; c < 8; ++c)
+  {
+    corners[c] = {
+      c & 1 ? box[0].hi : box[0].lo, c & 2 ? box[1].hi : box[1].lo, c & 4 ? box[2].hi : box[2].lo
+    };
+  }
+  return render::fit_points(corners, aspect, settings.azimuth, settings.elevation, fit);
 }
 
 std::string format_time(double t)
@@ -78,15 +113,29 @@ PictureKit::PictureKit()
   }
 }
 
-render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, double aspect)
+render::Camera plan_camera(const Plan& plan,
+  const RenderSettings& settings,
+  double aspect,
+  const Framing& framing)
 {
-  std::array<double, 3> lo, hi;
-  for (int k = 0; k < 3; ++k)
-  {
-    lo[k] = settings.view_box ? (*settings.view_box)[k] : plan.world_box[k].lo;
-    hi[k] = settings.view_box ? (*settings.view_box)[k + 3] : plan.world_box[k].hi;
-  }
-  return box_camera(lo, hi, aspect, settings.azimuth, settings.elevation);
+  return fitted(plan, settings, aspect, framing, 0.0);
+}
+
+double caption_band(int height)
+{
+  // The caption's text, its descent and a gap, over its baseline.
+  return height > 0 ? std::min((caption_lift(height) + 1.3 * caption_px(height)) / height, 0.5)
+                    : 0.0;
+}
+
+render::Camera frame_camera(const Plan& plan,
+  const RenderSettings& settings,
+  int width,
+  int height,
+  const Framing& framing)
+{
+  const double aspect = static_cast<double>(width) / std::max(height, 1);
+  return fitted(plan, settings, aspect, framing, caption_band(height));
 }
 
 render::Camera box_camera(const std::array<double, 3>& lo,
@@ -95,41 +144,15 @@ render::Camera box_camera(const std::array<double, 3>& lo,
   double azimuth,
   double elevation)
 {
-  // fit_box frames the box's bounding sphere; move the eye in until the box's eight corners
-  // (not the sphere, which is up to sqrt(3) wider) fill the picture.
-  const double fill = 0.92;
-  render::Camera camera = render::fit_box(lo, hi, aspect, azimuth, elevation);
-  if (camera.orthographic)
+  // The eight corners, not the box's bounding sphere (up to sqrt(3) wider), fill the picture.
+  std::array<render::Vec3, 8> corners;
+  for (int c = 0; c < 8; ++c)
   {
-    return camera;
+    corners[c] = { c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
   }
-  const render::CameraFrame frame = render::camera_frame(camera);
-  const double tan_v = std::tan(0.5 * camera.view_angle_deg * 3.14159265358979323846 / 180.0);
-  const double tan_h = tan_v * aspect;
-  double distance = 0.0;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    std::array<double, 3> c;
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] = ((corner >> k) & 1 ? hi[k] : lo[k]) - camera.focal_point[k];
-    }
-    const double x = c[0] * frame.right[0] + c[1] * frame.right[1] + c[2] * frame.right[2];
-    const double y = c[0] * frame.up[0] + c[1] * frame.up[1] + c[2] * frame.up[2];
-    const double z = c[0] * frame.forward[0] + c[1] * frame.forward[1] + c[2] * frame.forward[2];
-    // depth of the corner = distance + z; it must see |x| and |y| within the fill
-    distance = std::max(distance, std::abs(x) / (fill * tan_h) - z);
-    distance = std::max(distance, std::abs(y) / (fill * tan_v) - z);
-  }
-  if (distance > 0 && std::isfinite(distance))
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      camera.position[k] = camera.focal_point[k] - distance * frame.forward[k];
-    }
-    camera.near_distance = 0.01 * distance;
-  }
-  return camera;
+  render::FitOptions fit;
+  fit.fill = 0.92;
+  return render::fit_points(corners, aspect, azimuth, elevation, fit);
 }
 
 render::Image render_sample(const Plan& plan,
@@ -140,9 +163,9 @@ render::Image render_sample(const Plan& plan,
   int height,
   const RenderSettings& settings,
   int threads,
-  const raycast::Floor* floor)
+  const raycast::Floor* floor,
+  const Framing& framing)
 {
-  (void)settings;
   render::Image image(width, height, to_rgba(sample.background));
   const mesh::Surface& s = section.surface;
   if (s.cells.empty() && !floor)
@@ -151,8 +174,8 @@ render::Image render_sample(const Plan& plan,
   }
   if (s.dimension == 2)
   {
-    // No camera for a flat section: it is drawn as seen from +z, fitted to the world box.
-    draw_contour(image, plan, section, sample);
+    // No camera for a flat section: it is drawn as seen from +z, fitted to the view box.
+    draw_contour(image, shown_box(plan, settings, framing), section, sample);
     return image;
   }
   std::vector<float> linear;
@@ -287,13 +310,13 @@ void decorate_frame(render::Image& frame,
   PictureKit* kit)
 {
   render::Font* font = font_of(kit);
-  const double px = std::max(12.0, frame.height / 34.0);
+  const double px = caption_px(frame.height);
   if (font)
   {
     const std::string caption = format_time(sample.time) + "     " + sample.label;
     font->draw(frame,
       0.025 * frame.height,
-      frame.height - 0.03 * frame.height,
+      frame.height - caption_lift(frame.height),
       caption,
       px,
       text_colour_on(sample.background),

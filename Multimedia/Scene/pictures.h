@@ -1,11 +1,13 @@
 // The pictures of a multimedia mapping, drawn headless with FRepKit's software renderer
 // (Mapping/Render; the packaged VTK renders only through X, and `frepkit map` must not need a
-// display): a cell or frame's section with one camera for every cell and frame, the
-// spreadsheet of cells with their labels, a frame's inset (the plane of the dynamic coordinates
-// as a checkerboard with the path and the current point) and the path picture.
+// display): a cell or frame's section with one camera for every cell and frame (framing the
+// solids: Scene/framing.h), the spreadsheet of cells with their labels, a frame's inset (the
+// plane of the dynamic coordinates as a checkerboard with the path and the current point) and
+// the path picture.
 #pragma once
 
 #include "Plan/mapping_plan.h"
+#include "Scene/framing.h"
 #include "Scene/section_mesh.h"
 
 #include "Raycast/raycast.h"
@@ -31,12 +33,32 @@ struct PictureKit
   std::string font_error; ///< why there is no font
 };
 
-/// The camera for every cell and frame of the plan: the world box seen from the render
-/// settings' azimuth and elevation, fitted for the aspect ratio width / height.
-render::Camera plan_camera(const Plan& plan, const RenderSettings& settings, double aspect);
+/// The camera for every cell and frame of the plan, seen from the settings' azimuth and
+/// elevation for the aspect ratio width / height: the settings' view_box when they have one
+/// (box_camera); else the framing's outline, the solids seen from that direction (frame_solids,
+/// Scene/framing.h), within 92% of the picture's width or height (render::fit_points); else,
+/// with an empty framing, the plan's world box (box_camera).
+render::Camera plan_camera(const Plan& plan,
+  const RenderSettings& settings,
+  double aspect,
+  const Framing& framing = {});
+
+/// The fraction of a frame's height (pixels) that decorate_frame's caption takes at the bottom.
+double caption_band(int height);
+
+/// The camera of the animation frames of width x height pixels (the page scene): plan_camera's
+/// with the caption's band at the bottom kept free (caption_band), so the shape stays clear of
+/// it.
+render::Camera frame_camera(const Plan& plan,
+  const RenderSettings& settings,
+  int width,
+  int height,
+  const Framing& framing = {});
 
 /// A camera that sees the box [lo, hi] from (azimuth, elevation) (render::fit_box's angles) with
-/// its eight corners filling the picture of width / height = aspect.
+/// its eight corners filling 92% of the picture of width / height = aspect, along its width or
+/// its height, whichever the box reaches first (tighter than fit_box's fit_corners, which keeps
+/// them in the circle of the shorter side).
 render::Camera box_camera(const std::array<double, 3>& lo,
   const std::array<double, 3>& hi,
   double aspect,
@@ -45,8 +67,9 @@ render::Camera box_camera(const std::array<double, 3>& lo,
 
 /// The section drawn with the sample's colour (or the section's vertex colours), opacity and
 /// light intensity over the sample's background. A 2-D section (segments) is drawn as seen
-/// from +z, fitted to the world box. `threads` 0 = all cores. With `floor` (the floor scene,
-/// floor_scene.h), the checkerboard, the path and the section's shadow are drawn with it.
+/// from +z, fitted to the shown box (shown_box: the settings' view_box, else the framing's box,
+/// else the world box). `threads` 0 = all cores. With `floor` (the floor scene, floor_scene.h),
+/// the checkerboard, the path and the section's shadow are drawn with it.
 render::Image render_sample(const Plan& plan,
   const Section& section,
   const Sample& sample,
@@ -55,7 +78,8 @@ render::Image render_sample(const Plan& plan,
   int height,
   const RenderSettings& settings,
   int threads = 1,
-  const raycast::Floor* floor = nullptr);
+  const raycast::Floor* floor = nullptr,
+  const Framing& framing = {});
 
 /// The cells (pictures in plan order: column fastest, then row, then layer) on the plan's grid
 /// with gaps, each labelled with its coordinate values, the grid coordinates named along the

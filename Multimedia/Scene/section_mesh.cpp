@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <optional>
 
 namespace frep::mapping
@@ -137,6 +138,26 @@ std::array<double, 9> WorldMapping::jacobian(const std::array<double, 3>& p) con
     }
   }
   return j;
+}
+
+std::array<Interval, 3> WorldMapping::world_box(const std::array<Interval, 3>& model_box) const
+{
+  std::array<Interval, 3> axes{ Interval{ 0.0, 0.0 }, Interval{ 0.0, 0.0 }, Interval{ 0.0, 0.0 } };
+  for (int k = 0; k < axes_; ++k)
+  {
+    const ChannelMap& map = maps_[k];
+    const Interval range = model_box[k];
+    const int steps = map.is_monotone() ? 1 : 1024;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int i = 0; i <= steps; ++i)
+    {
+      const double v = map.forward(range.lo + (range.hi - range.lo) * i / steps);
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    axes[k] = Interval{ lo, hi };
+  }
+  return system_ == WorldSystem::Cartesian ? axes : curvilinear_box(system_, axes);
 }
 
 Specialisation section_specialisation(const Plan& plan,

@@ -70,6 +70,10 @@ public:
   std::array<double, 3> to_world(const std::array<double, 3>& model_point) const;
   /// d(world)/d(model) at the point, row-major, by central differences.
   std::array<double, 9> jacobian(const std::array<double, 3>& model_point) const;
+  /// The world box holding the image of `model_box` (world-axis order): each axis's range
+  /// through its channel (the ends for a monotone curve, else 1025 points), then the
+  /// cylindrical or spherical system's extremes (curvilinear_box). Flat in z for 2-D sections.
+  std::array<Interval, 3> world_box(const std::array<Interval, 3>& model_box) const;
 
 private:
   WorldMapping() = default;

@@ -5,7 +5,9 @@
 # "render": {"method": "raycast"} (cells drawn without meshing, like the meshed ones) and
 # {"scene": "floor"} (the paper's Fig. 8: the shape travelling over the checkerboard of the
 # dynamic plane, ray-cast against a baseline frame, meshed like the ray-cast one), and bad
-# render settings refused with the JSON place.
+# render settings refused with the JSON place. Framing: without a box, what is not background
+# in frepkit render's and slice's pictures, and the shape in a spreadsheet cell and a frame of
+# frepkit map (a unit ball in [-10, 10]^3), spans at least half the picture's width or height.
 #   frepkit_render_test.sh FREPKIT IMAGE_CHECK SOURCE_DIR
 set -u
 frepkit=$(realpath "$1")
@@ -63,6 +65,17 @@ if sys.argv[2] == 'bbox':  # the box of the pixels unlike the top-left one: "wid
                 ys.append(y)
     print(w, h, max(xs) - min(xs) + 1 if xs else 0, max(ys) - min(ys) + 1 if ys else 0)
     sys.exit(0)
+if sys.argv[2] == 'shape':  # the box of the coloured pixels (not white, grey or black text) in
+    x0, y0, rw, rh = (int(v) for v in sys.argv[3:7])  # the rectangle: "width height w h"
+    xs, ys = [], []
+    for y in range(y0, y0 + rh):
+        for x in range(x0, x0 + rw):
+            p = rows[y][3 * x:3 * x + 3]
+            if max(p) - min(p) > 40:
+                xs.append(x)
+                ys.append(y)
+    print(rw, rh, max(xs) - min(xs) + 1 if xs else 0, max(ys) - min(ys) + 1 if ys else 0)
+    sys.exit(0)
 x, y = int(sys.argv[2]), int(sys.argv[3])
 print(*rows[y][3 * x:3 * x + 3])
 PY
@@ -88,8 +101,8 @@ if cmp -s ball1.png ball2.png; then pass "floor pictures identical for 1 and 2 t
 # Framing: without --box the solid's own bounds are the box, so the picture frames the solid
 # (the -10..10 default left a unit ball a few pixels wide): what is not background spans at least
 # half the picture's width or height, with the floor too.
-frames() { # NAME PNG
-  read -r w h bw bh < <(pixel "$2" bbox)
+frames() { # NAME PNG [X Y W H: the shape's coloured pixels in that rectangle]
+  if [ $# -gt 2 ]; then read -r w h bw bh < <(pixel "$2" shape "$3" "$4" "$5" "$6"); else read -r w h bw bh < <(pixel "$2" bbox); fi
   if [ $((2 * bw)) -ge "$w" ] || [ $((2 * bh)) -ge "$h" ]; then pass "$1 ($bw x $bh of $w x $h)"; else fail "$1: $bw x $bh of $w x $h"; fi
 }
 run "render a ball without --box" 0 "$frepkit" render ball.hf -o framed.png --size 160,120
@@ -100,6 +113,33 @@ frames "render frames the ball and its floor" framed_floor.png
 printf '%s\n' 'my_model(x[2], a[1]) { my_model = 0.04 - x[1] * x[1] - x[2] * x[2]; }' >small_disc.hf
 run "slice a small disc without --box" 0 "$frepkit" slice small_disc.hf -o small_disc.png
 frames "slice frames the disc" small_disc.png
+
+# The mapping's cells and frames frame the solids, not the model box: a unit ball in [-10, 10]^3
+# (x4 changes nothing) covers at least half of a spreadsheet cell and of a frame, meshed or
+# ray-cast (the frame's caption is grey: only the shape's colour counts there).
+printf '%s\n' 'my_model(x[4], a[1]) { my_model = 1 - x[1] * x[1] - x[2] * x[2] - x[3] * x[3]; }' >ball4.hf
+cat >framing.json <<'JSON'
+{
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-10, 10] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-10, 10] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-10, 10] }],
+    "x4": [{ "type": "spreadsheet", "axis": "columns", "range": [0, 1], "step": 1 },
+           { "type": "dynamic", "range": [0, 1] }]
+  },
+  "world": { "resolution": 48 },
+  "animation": { "duration": 1, "fps": 2 },
+  "spreadsheet": { "cell_size": 96, "labels": false },
+  "render": { "width": 160, "height": 120, "inset": false }
+}
+JSON
+for method in mesh raycast; do
+  run "map a unit ball in [-10, 10]^3 ($method)" 0 "$frepkit" map ball4.hf framing.json -O "framed_$method" --only spreadsheet,frames --method "$method" -q
+  rect=$("$py" -c "import json,sys; m=json.load(open(sys.argv[1])); print(*[f for f in m['files'] if f['kind'] == 'spreadsheet'][0]['cells'][0]['rect'])" "framed_$method/manifest.json")
+  # shellcheck disable=SC2086 # the rectangle's four numbers
+  frames "a spreadsheet cell frames the ball ($method)" "framed_$method/spreadsheet.png" $rect
+  frames "a frame frames the ball ($method)" "framed_$method/frames/frame_00001.png" 0 0 160 120
+done
 
 run "bad --view refused" 1 "$frepkit" render ball.hf -o x.png --view 10,nan
 expect_in "bad --view named" "$err" "--view"

@@ -2,7 +2,9 @@
 // and its Lambert shading against the exact projection; a shell thinner than a mesher's grid
 // cell is found; an object behind the camera or outside the box leaves the picture empty; the
 // box's cut faces are drawn as caps; the depth of the nearest point; the same picture for 1
-// and 2 threads (floor and shadows included); bad input refused.
+// and 2 threads (floor and shadows included); bad input refused; the solid's bounds (two passes,
+// to 1/256 of the box) and bounds given in the shape draw the same picture; the silhouette a
+// camera must see (a ball's outline along any view).
 #include "Raycast/raycast.h"
 
 #include "Compiler/model.h"
@@ -297,6 +299,66 @@ TEST(Raycast, LowestPointOfTheSolid)
   rc::Shape empty = sphere_shape();
   empty.tape = tape_of("-1 - x[1]^2");
   EXPECT_FALSE(rc::lowest_z(empty));
+}
+
+// solid_bounds: what the ray caster clips to and cameras frame. A ball of radius 1 in [-10, 10]^3
+// to 1/256 of the box; none for an empty solid; bounds given in the shape draw the same picture.
+TEST(Raycast, SolidBoundsAndGivenBounds)
+{
+  rc::Shape ball = sphere_shape();
+  ball.box = { Interval{ -10, 10 }, Interval{ -10, 10 }, Interval{ -10, 10 } };
+  const frep::mesh::SolidBounds b = rc::solid_bounds(ball.tape, ball.box);
+  ASSERT_TRUE(b.bounded());
+  for (const Interval& i : b.box)
+  {
+    EXPECT_LE(i.lo, -1.0);
+    EXPECT_GE(i.lo, -1.0 - 2 * 20.0 / 256);
+    EXPECT_GE(i.hi, 1.0);
+    EXPECT_LE(i.hi, 1.0 + 2 * 20.0 / 256);
+  }
+  rc::Shape empty = sphere_shape();
+  empty.tape = tape_of("-1 - x[1]^2");
+  EXPECT_EQ(rc::solid_bounds(empty.tape, empty.box).status, frep::mesh::SolidBounds::Status::Empty);
+
+  const render::Camera camera = ortho_camera(1.2);
+  render::Image searched(64, 64), given(64, 64);
+  ASSERT_TRUE(rc::render(searched, camera, ball, nullptr, lambert_style()).ok());
+  ball.bounds = b;
+  ASSERT_TRUE(rc::render(given, camera, ball, nullptr, lambert_style()).ok());
+  EXPECT_EQ(searched.rgba, given.rgba);
+}
+
+// silhouette: the first hits of rays along the view. A ball's points lie on it, on its front
+// (towards the eye), and their outline across the view is its radius to a ray's spacing.
+TEST(Raycast, SilhouetteOfABall)
+{
+  rc::Shape ball = sphere_shape(1.5);
+  ball.box = { Interval{ -10, 10 }, Interval{ -10, 10 }, Interval{ -10, 10 } };
+  ball.to_world = { 1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3 }; // moved to (1, 2, 3)
+  for (const double az : { 0.0, 35.0, 120.0 })
+  {
+    const render::CameraFrame view = render::view_frame(az, 25.0);
+    const rc::Silhouette s = rc::silhouette(ball, view, 48, 2);
+    // The picture covers the bounds' cube (side 3 to 1/256 of the box) seen along the view.
+    ASSERT_GT(s.points.size(), 48u * 48 / 5);
+    EXPECT_GT(s.spacing, 3.0 / 48);
+    EXPECT_LT(s.spacing, 3.2 * std::sqrt(3.0) / 48);
+    double right_lo = 1e9, right_hi = -1e9;
+    for (const render::Vec3& p : s.points)
+    {
+      const render::Vec3 d{ p[0] - 1, p[1] - 2, p[2] - 3 };
+      EXPECT_NEAR(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1.5, 1e-3);
+      EXPECT_LE(d[0] * view.forward[0] + d[1] * view.forward[1] + d[2] * view.forward[2], 1e-3);
+      const double r = d[0] * view.right[0] + d[1] * view.right[1] + d[2] * view.right[2];
+      right_lo = std::min(right_lo, r);
+      right_hi = std::max(right_hi, r);
+    }
+    EXPECT_NEAR(right_lo, -1.5, s.spacing);
+    EXPECT_NEAR(right_hi, 1.5, s.spacing);
+  }
+  rc::Shape empty = sphere_shape();
+  empty.tape = tape_of("-1 - x[1]^2");
+  EXPECT_TRUE(rc::silhouette(empty, render::view_frame(0.0, 0.0)).points.empty());
 }
 
 } // namespace

@@ -206,8 +206,10 @@ t.check(caster.Width == 640 and caster.Height == 480 and caster.Azimuth == 35.0 
         caster.Elevation == 25.0 and caster.Supersample == 2 and caster.Floor == 0 and
         list(caster.Colour) == [0.85, 0.62, 0.38] and list(caster.Background) == [1, 1, 1, 1],
         "ray caster defaults")
+t.check(caster.FrameSolid == 1, "ray caster frames the solid by default")
 caster.Width = 81  # odd: the centre pixel looks along the view axis
 caster.Height = 61
+caster.FrameSolid = 0  # the box's camera: a known distance
 caster.UpdatePipeline()
 info = caster.GetDataInformation()
 t.check(list(info.GetExtent()) == [0, 80, 0, 60, 0, 0], "picture extent %s" % list(info.GetExtent()))
@@ -218,6 +220,10 @@ t.check(colour is not None and colour.GetNumberOfComponents() == 4 and colour.Ge
 distance = 2.4 * math.sqrt(3) * math.sqrt(1 + 1 / (0.9 * math.tan(math.radians(15))) ** 2)
 t.near(caster.PointData["Depth"].GetRange()[0], distance - 2.0, 1e-4 * distance,
        "nearest depth: the front of the ball")
+caster.FrameSolid = 1  # the ball's own outline: nearer than the box's bounding sphere allows
+caster.UpdatePipeline()
+nearest = caster.PointData["Depth"].GetRange()[0]
+t.check(0.0 < nearest < distance - 2.0 - 0.5, "framing the solid comes nearer: %s" % nearest)
 caster.Floor = 1
 caster.UpdatePipeline()
 t.check(caster.GetDataInformation().GetNumberOfPoints() == 81 * 61, "with the floor")

@@ -13,6 +13,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "Raycast/raycast.h"
+#include "Raycast/shape_camera.h"
 #include "Render/camera.h"
 #include "Render/image.h"
 
@@ -56,68 +57,23 @@ struct vtkFRepRayCaster::Internals
   void Fit(vtkFRepRayCaster& self, frep::raycast::Shape& shape);
 };
 
-// The camera frames the solid (FrameSolid): its silhouette seen from the camera's direction
-// (raycast::silhouette, inside the solid's bounds in the box, which the shape keeps so that
-// rendering does not search again), within 90 % of the picture's width or height; or the box's
-// bounding sphere (FrameSolid off, or nothing in the box). With the floor, the solid stands on
-// it: the floor's height is the solid's lowest point (raycast::lowest_z), and the floor's
-// squares spread under the solid's bounds (or the box) are framed with it.
+// The camera frames the solid (FrameSolid) or the box, with the floor under the solid
+// (raycast::frame_shape, shared with frepkit render); the shape keeps the solid's bounds so that
+// rendering does not search again.
 void vtkFRepRayCaster::Internals::Fit(vtkFRepRayCaster& self, frep::raycast::Shape& shape)
 {
-  frep::render::Vec3 lo{ this->Box[0], this->Box[2], this->Box[4] };
-  frep::render::Vec3 hi{ this->Box[1], this->Box[3], this->Box[5] };
-  std::vector<frep::render::Vec3> outline; // what the camera must see, when it frames the solid
-  double spacing = 0.0;
-  if (self.FrameSolid)
-  {
-    shape.bounds = frep::raycast::solid_bounds(shape.tape, shape.box);
-    for (int a = 0; shape.bounds->bounded() && a < 3; ++a)
-    {
-      lo[a] = shape.bounds->box[a].lo;
-      hi[a] = shape.bounds->box[a].hi;
-    }
-    frep::raycast::Silhouette seen = frep::raycast::silhouette(
-      shape, frep::render::view_frame(self.Azimuth, self.Elevation), 64, self.NumberOfThreads);
-    outline = std::move(seen.points);
-    spacing = seen.spacing;
-  }
-  this->Floor.reset();
-  if (self.Floor)
-  {
-    const std::optional<double> bottom = frep::raycast::lowest_z(shape, 128, self.NumberOfThreads);
-    lo[2] = !outline.empty() && bottom ? *bottom : lo[2];
-    this->Floor = frep::raycast::floor_under(lo, hi);
-    this->Floor->height = bottom ? *bottom : this->Floor->height;
-    for (int c = 0; !outline.empty() && c < 4; ++c) // the board's corners
-    {
-      outline.push_back({ c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], this->Floor->height });
-    }
-  }
-  frep::render::FitOptions fit;
-  fit.view_angle_deg = self.ViewAngle;
-  fit.orthographic = self.ParallelProjection != 0;
-  const double aspect = static_cast<double>(this->Width) / this->Height;
-  this->Camera =
-    outline.empty()
-      ? frep::render::fit_box(lo, hi, aspect, self.Azimuth, self.Elevation, fit)
-      : frep::render::fit_points(outline, aspect, self.Azimuth, self.Elevation, fit, spacing);
-  if (!outline.empty())
-  {
-    // The same view with its focal point at the depth of the solid's bounds' centre (the
-    // silhouette's points are its front): a solid symmetric about it is looked at there.
-    const frep::render::CameraFrame f = frep::render::camera_frame(this->Camera);
-    double along = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      along +=
-        (0.5 * (shape.bounds->box[a].lo + shape.bounds->box[a].hi) - this->Camera.position[a]) *
-        f.forward[a];
-    }
-    for (int a = 0; along > 0.0 && a < 3; ++a)
-    {
-      this->Camera.focal_point[a] = this->Camera.position[a] + along * f.forward[a];
-    }
-  }
+  frep::raycast::ShapeView view;
+  view.azimuth_deg = self.Azimuth;
+  view.elevation_deg = self.Elevation;
+  view.aspect = static_cast<double>(this->Width) / this->Height;
+  view.fit.view_angle_deg = self.ViewAngle;
+  view.fit.orthographic = self.ParallelProjection != 0;
+  view.frame_solid = self.FrameSolid != 0;
+  view.floor = self.Floor != 0;
+  view.threads = self.NumberOfThreads;
+  frep::raycast::FramedShape framed = frep::raycast::frame_shape(shape, view);
+  this->Camera = framed.camera;
+  this->Floor = framed.floor;
   std::copy(this->Camera.position.begin(), this->Camera.position.end(), self.CameraPosition);
   std::copy(
     this->Camera.focal_point.begin(), this->Camera.focal_point.end(), self.CameraFocalPoint);

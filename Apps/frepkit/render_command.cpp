@@ -14,6 +14,7 @@
 #include "picture_size.h"
 
 #include "Raycast/raycast.h"
+#include "Raycast/shape_camera.h"
 #include "Render/camera.h"
 #include "Render/image.h"
 
@@ -93,6 +94,13 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
   cmd->add_flag("--floor",
     options.floor,
     "A checkerboard floor under the shape, at its lowest point (it stands on it), with its shadow");
+  cmd
+    ->add_option("--frame",
+      options.frame,
+      "What the camera frames: solid (the solid's outline seen from the view) or box (the box's "
+      "bounding sphere)")
+    ->capture_default_str()
+    ->check(CLI::IsMember({ "solid", "box" }));
   cmd->add_flag("--shadows", options.shadows, "The shape's shadows on itself");
   cmd->add_option("-j,--threads", options.threads, "Worker threads (0 = all cores)")
     ->capture_default_str()
@@ -137,7 +145,7 @@ int run_render(const RenderOptions& options)
 
   frep::raycast::Shape shape;
   shape.tape = model->specialise(mapping.specialisation(options.parameters));
-  // The camera is fitted to this box: the solid's own bounds frame the solid.
+  // The solid is cut by this box (its own bounds by default); the camera frames the solid in it.
   const frep::mesh::Grid grid = make_grid(
     box_or_solid_bounds(parse_box(options.box, mapping.free), shape.tape, options.quiet), {}, 3);
   for (int k = 0; k < 3; ++k)
@@ -146,27 +154,15 @@ int run_render(const RenderOptions& options)
   }
   shape.colour = colour;
   const int width = size->width, height = size->height;
-  std::array<double, 3> lo{ grid.lo[0], grid.lo[1], grid.lo[2] };
-  std::array<double, 3> hi{ grid.hi[0], grid.hi[1], grid.hi[2] };
-
-  frep::raycast::Floor floor;
-  if (options.floor)
-  {
-    // The solid stands on the board: the floor at its lowest point, not at the box's bottom
-    // (a small shape in the default box would float far above its shadow).
-    if (const std::optional<double> bottom = frep::raycast::lowest_z(shape, 128, options.threads))
-    {
-      lo[2] = *bottom;
-    }
-    floor = frep::raycast::floor_under(lo, hi);
-  }
-  // Fitted to the box's corners when the box is the solid's own (its bounding sphere would
-  // leave a ball less than half the picture); an explicit --box keeps the sphere fit.
-  frep::render::FitOptions fit;
-  fit.fit_corners = options.box.empty();
-  fit.fill = fit.fit_corners ? 1.0 : fit.fill; // exact for the corners; the box has a margin
-  const frep::render::Camera camera = frep::render::fit_box(
-    lo, hi, static_cast<double>(width) / height, options.view[0], options.view[1], fit);
+  frep::raycast::ShapeView view;
+  view.azimuth_deg = options.view[0];
+  view.elevation_deg = options.view[1];
+  view.aspect = static_cast<double>(width) / height;
+  view.frame_solid = options.frame == "solid";
+  view.floor = options.floor;
+  view.threads = options.threads;
+  const frep::raycast::FramedShape framed = frep::raycast::frame_shape(shape, view);
+  const frep::render::Camera& camera = framed.camera;
 
   frep::raycast::Style style;
   style.render.supersample = options.supersample;
@@ -176,7 +172,7 @@ int run_render(const RenderOptions& options)
   const frep::raycast::Result r = frep::raycast::render(picture,
     camera,
     shape,
-    options.floor ? &floor : nullptr,
+    framed.floor ? &*framed.floor : nullptr,
     style,
     nullptr,
     [] { return InterruptGuard::interrupted(); });

@@ -1,7 +1,7 @@
 // frepkit render MODEL --fix x4=0.5,x5=0.5 -o picture.png: one picture of a 3-D cross-section
 // drawn directly from the function by rays (Raycast/raycast.h): no mesh, so no facets and no
-// detail lost below a grid. The camera frames the box from --view azimuth,elevation like the
-// mapping's pictures; --floor puts a checkerboard floor under the shape, at its lowest point,
+// detail lost below a grid. The camera frames the solid's outline (or, --frame box, the box)
+// from --view azimuth,elevation like the mapping's pictures (raycast::frame_shape); --floor puts a checkerboard floor under the shape, at its lowest point,
 // with its shadow.
 #pragma once
 
@@ -35,6 +35,7 @@ struct RenderOptions
   std::vector<double> background{ 1.0, 1.0, 1.0 }; ///< sRGB 0..1
   int supersample = 2;
   bool floor = false;
+  std::string frame = "solid"; ///< what the camera frames: "solid" (its silhouette) or "box"
   bool shadows = false; ///< the shape's shadows on itself
   int threads = 0;
   bool quiet = false;

@@ -86,7 +86,7 @@ below() { [[ "$1" =~ ^[0-9.eE+-]+$ ]] && awk -v a="$1" -v b="$2" 'BEGIN { exit !
 
 # --- frepkit render ----------------------------------------------------------------------------
 printf '%s\n' 'my_model(x[3], a[1]) { my_model = 1 - x[1] * x[1] - x[2] * x[2] - x[3] * x[3]; }' >ball.hf
-run "render a ball" 0 "$frepkit" render ball.hf -o ball.png --box -2,-2,-2,2,2,2 --size 160,120
+run "render a ball (the box framed)" 0 "$frepkit" render ball.hf -o ball.png --box -2,-2,-2,2,2,2 --size 160,120 --frame box
 expect_in "render reports the rays" "$err" "rays ("
 if [ "$(png_size ball.png)" = "160 120" ]; then pass "picture is 160x120"; else fail "picture size $(png_size ball.png)"; fi
 read -r r g b < <(pixel ball.png 80 60)
@@ -108,6 +108,16 @@ frames() { # NAME PNG [X Y W H: the shape's coloured pixels in that rectangle]
 run "render a ball without --box" 0 "$frepkit" render ball.hf -o framed.png --size 160,120
 expect_in "render names the solid's box" "$err" "(the solid's bounds; --box to choose)"
 frames "render frames the ball" framed.png
+# The camera fits the ball's silhouette (raycast::frame_shape), not its box's corners: nearly the
+# picture's height (fill 0.9), with a box of the solid's bounds and with a larger box alike.
+for box in "" "--box -2,-2,-2,2,2,2"; do
+  # shellcheck disable=SC2086 # the box option's two words, or none
+  run "render a ball ${box:-without --box}: the solid framed" 0 "$frepkit" render ball.hf -o tight.png --size 160,120 $box
+  read -r w h bw bh < <(pixel tight.png bbox)
+  if [ $((4 * bh)) -ge $((3 * h)) ] && [ "$bh" -lt "$h" ]; then pass "the ball spans ${bh} of ${h} rows (${box:-no box})"; else fail "the ball spans $bw x $bh of $w x $h (${box:-no box})"; fi
+done
+run "bad --frame refused" 1 "$frepkit" render ball.hf -o x.png --frame corners
+expect_in "bad --frame named" "$err" "--frame"
 run "render a ball on the floor without --box" 0 "$frepkit" render ball.hf -o framed_floor.png --size 160,120 --floor
 frames "render frames the ball and its floor" framed_floor.png
 printf '%s\n' 'my_model(x[2], a[1]) { my_model = 0.04 - x[1] * x[1] - x[2] * x[2]; }' >small_disc.hf

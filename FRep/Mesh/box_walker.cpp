@@ -2,82 +2,53 @@
 // and contours.
 #include "Mesh/extraction_common.h"
 
-#include "Eval/block_runner.h"
 #include "Eval/thread_pool.h"
 
 #include <chrono>
-#include <optional>
 
 namespace frep::mesh::detail
 {
 
-BoxWalker::Level::Level(std::shared_ptr<const Tape> t)
-  : tape(std::move(t))
-  , interval(tape)
-  , choices(tape->code.size())
-  , simplifiable(may_simplify(*tape))
+namespace
 {
+
+RegionWalkerOptions walk_options(const ExtractOptions& options)
+{
+  RegionWalkerOptions o;
+  o.simplify = options.simplify;
+  o.freeze = true; // boxes inside boxes skip what their parent dominates
+  o.jit = options.jit;
+  return o;
 }
 
-void BoxWalker::Level::rebind(std::shared_ptr<const Tape> t)
-{
-  tape = std::move(t);
-  interval.rebind(tape, true);
-  choices.resize(tape->code.size());
-  simplifiable = may_simplify(*tape);
-  kernel.reset();
-  throttle = {};
-}
+} // namespace
 
 BoxWalker::BoxWalker(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
   const ExtractOptions& options)
   : frame_(frame)
   , options_(options)
-  , root_(tape)
-  , runner_(std::make_unique<eval::BlockRunner>())
+  , walker_(tape, walk_options(options))
 {
 }
 
 BoxWalker::~BoxWalker() = default;
 
-BoxWalker::Level& BoxWalker::level_below(std::size_t depth, std::shared_ptr<const Tape> tape)
-{
-  if (below_.size() <= depth)
-  {
-    below_.resize(depth + 1);
-  }
-  if (!below_[depth])
-  {
-    below_[depth] = std::make_unique<Level>(std::move(tape));
-  }
-  else
-  {
-    below_[depth]->rebind(std::move(tape));
-  }
-  return *below_[depth];
-}
-
 void BoxWalker::run(const CellBox& block, Piece& piece)
 {
   builder_.begin(&piece);
-  walk(block, root_, 0);
+  walk(block, walker_.root());
 }
 
-void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFreeze* link)
+void BoxWalker::walk(const CellBox& box, const RegionWalker::Region& region)
 {
   Piece& piece = builder_.piece();
-  const bool simplify = options_.cull && options_.simplify && level.simplifiable &&
-    level.throttle.worth_trying();
   if (options_.cull)
   {
     ++piece.boxes_tested;
-    while (freezes_.size() <= depth)
-    {
-      freezes_.emplace_back();
-    }
-    const BoxSign sign = classify(enclose(level.interval, frame_, box,
-                                    simplify ? &level.choices : nullptr,
-                                    link ? link->get() : nullptr, &freezes_[depth]),
+    const std::array<Interval, 3> intervals = box_intervals(frame_, box);
+    const BoxSign sign = classify(
+      walker_.enclose(region,
+        std::span<const Interval>(intervals.data(), static_cast<std::size_t>(frame_.dimension))),
       options_.iso);
     if (sign != BoxSign::Unknown)
     {
@@ -90,17 +61,7 @@ void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFr
     }
   }
   // Below this box, evaluate only what the box left undecided.
-  Level* below = &level;
-  if (simplify)
-  {
-    std::shared_ptr<const Tape> tape = simplifier_.simplify(*level.tape, level.choices);
-    const bool paid = tape && worth_switching(*tape, *level.tape);
-    level.throttle.record(paid);
-    if (paid)
-    {
-      below = &level_below(depth, std::move(tape));
-    }
-  }
+  const RegionWalker::Region inner = walker_.descend(region);
   const std::int64_t leaf_cells = options_.leaf_cells;
   bool is_leaf = true;
   for (int a = 0; a < frame_.dimension; ++a)
@@ -109,23 +70,17 @@ void BoxWalker::walk(const CellBox& box, Level& level, std::size_t depth, LazyFr
   }
   if (is_leaf)
   {
-    sample(box, *below);
+    sample(box, inner);
     leaf(box);
     return;
   }
-  // The same tape below: what this box dominates need not be evaluated again inside it.
-  std::optional<LazyFreeze> own;
-  if (options_.cull && below == &level)
-  {
-    own.emplace(level.interval, link ? link->get() : nullptr, freezes_[depth]);
-  }
   for (const CellBox& child : split(box, leaf_cells, frame_.dimension))
   {
-    walk(child, *below, depth + 1, own ? &*own : nullptr);
+    walk(child, inner);
   }
 }
 
-void BoxWalker::sample(const CellBox& box, Level& level)
+void BoxWalker::sample(const CellBox& box, const RegionWalker::Region& region)
 {
   std::array<std::int64_t, 3> n{ 1, 1, 1 };
   for (int a = 0; a < frame_.dimension; ++a)
@@ -154,13 +109,10 @@ void BoxWalker::sample(const CellBox& box, Level& level)
   }
   const std::array<const double*, 3> inputs{ xs_.data(), ys_.data(), zs_.data() };
   Piece& piece = builder_.piece();
-  // (the root's tape is checked once)
-  runner_->bind(level.tape, &level != &root_,
-    options_.jit ? level.kernel.get(*level.tape, count) : nullptr);
-  piece.sample_instructions += count * level.tape->code.size();
-  piece.failed_samples += runner_->evaluate(
+  piece.sample_instructions += count * walker_.tape(region)->code.size();
+  piece.failed_samples += walker_.evaluate(region,
     std::span<const double* const>(inputs.data(), static_cast<std::size_t>(frame_.dimension)),
-    count, values_.data(), nullptr, {});
+    count, values_.data());
   piece.samples += count;
   for (double& v : values_)
   {

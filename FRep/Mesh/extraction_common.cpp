@@ -95,21 +95,14 @@ BoxSign classify(const IntervalResult& r, double iso)
   return BoxSign::Unknown;
 }
 
-IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
-  std::vector<Choice>* choices, const IntervalFreeze* outer, IntervalFreeze* inner)
+std::array<Interval, 3> box_intervals(const GridFrame& frame, const CellBox& box)
 {
   std::array<Interval, 3> intervals{};
   for (int a = 0; a < frame.dimension; ++a)
   {
     intervals[a] = Interval{ frame.coord(a, box.c0[a]), frame.coord(a, box.c1[a]) };
   }
-  const std::span<const Interval> corners(intervals.data(), static_cast<std::size_t>(frame.dimension));
-  if (outer || inner)
-  {
-    return evaluator.evaluate(corners, choices ? std::span<Choice>(*choices) : std::span<Choice>(),
-      outer, inner);
-  }
-  return choices ? evaluator.evaluate(corners, *choices) : evaluator.evaluate(corners);
+  return intervals;
 }
 
 std::vector<CellBox> split(const CellBox& box, std::int64_t leaf, int dimension)

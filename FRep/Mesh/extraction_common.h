@@ -5,24 +5,17 @@
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
-#include "Eval/jit_kernel.h"
-#include "Eval/tape_simplifier.h"
+#include "Eval/region_walker.h"
 #include "Mesh/surface.h"
 
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <deque>
 #include <memory>
 #include <limits>
 #include <string>
 #include <unordered_map>
 #include <vector>
-
-namespace frep::eval
-{
-class BlockRunner;
-}
 
 namespace frep
 {
@@ -160,13 +153,8 @@ enum class BoxSign
 };
 BoxSign classify(const IntervalResult& r, double iso);
 
-/// The enclosure of F over the cells' box (positions of its extreme samples).
-/// Encloses F over the box's samples; with `choices`, also records what the box decides about the
-/// tape's instructions (IntervalEvaluator::evaluate with choices).
-/// `outer` and `inner`: IntervalEvaluator::evaluate's freezes (null: none).
-IntervalResult enclose(IntervalEvaluator& evaluator, const GridFrame& frame, const CellBox& box,
-  std::vector<Choice>* choices = nullptr, const IntervalFreeze* outer = nullptr,
-  IntervalFreeze* inner = nullptr);
+/// The cells' box as intervals (positions of its extreme samples), one per axis of the frame.
+std::array<Interval, 3> box_intervals(const GridFrame& frame, const CellBox& box);
 
 /// Splits `box` (some axis longer than `leaf` cells) into up to 8 children whose sizes are
 /// multiples of `leaf` except the last along each axis.
@@ -200,32 +188,12 @@ protected:
   PieceBuilder builder_;
 
 private:
-  /// A tape and its interval evaluator: the model's tape at the root, a simplified one below a
-  /// box that decided some of its instructions (tape_simplifier.h; the values are the same bit
-  /// for bit). One per depth of the walk, rebound to each box's tape (none is made per box).
-  struct Level
-  {
-    std::shared_ptr<const Tape> tape;
-    IntervalEvaluator interval;
-    std::vector<Choice> choices;
-    bool simplifiable = false; // may_simplify(*tape)
-    eval::LazyKernel kernel;   // the tape compiled, once its samples pay for it
-    SimplifyThrottle throttle; // the Homotopic Fun blend's boxes never simplify
+  /// The region walker: the model's tape at the root, a simplified one below a box that decided
+  /// some of its instructions (the values are the same bit for bit), freezes per depth.
+  void walk(const CellBox& box, const RegionWalker::Region& region);
+  void sample(const CellBox& box, const RegionWalker::Region& region);
 
-    explicit Level(std::shared_ptr<const Tape> t);
-    void rebind(std::shared_ptr<const Tape> t); // a simplified tape (trusted)
-  };
-
-  /// `link`: what the enclosing box's interval lets this one skip (null: none, or another tape).
-  void walk(const CellBox& box, Level& level, std::size_t depth, LazyFreeze* link = nullptr);
-  void sample(const CellBox& box, Level& level);
-  Level& level_below(std::size_t depth, std::shared_ptr<const Tape> tape);
-
-  TapeSimplifier simplifier_;
-  Level root_;
-  std::vector<std::unique_ptr<Level>> below_; // [d]: the level below a box at depth d
-  std::deque<IntervalFreeze> freezes_;        // [d]: a box's at depth d (stable addresses)
-  std::unique_ptr<eval::BlockRunner> runner_; // samples the leaves, rebound to their tapes
+  RegionWalker walker_;
   std::vector<double> xs_, ys_, zs_, values_;
 };
 

@@ -1,6 +1,6 @@
 #include "Mesh/solid_bounds.h"
 
-#include "Eval/interval_evaluator.h"
+#include "Eval/region_walker.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,7 @@ namespace
 // One pass: cells are halved along axis (level % n) until each axis has `depth` levels.
 struct Walk
 {
-  IntervalEvaluator interval;
+  RegionWalker walker; // a shorter tape where a cell decides min/max (the same enclosures)
   std::size_t n;
   int max_level;
   std::size_t budget; // 0: none
@@ -56,7 +56,7 @@ struct Walk
     return true;
   }
 
-  void visit(std::vector<Interval>& cell, int level)
+  void visit(std::vector<Interval>& cell, int level, const RegionWalker::Region& region)
   {
     if (gave_up || covered(cell))
     {
@@ -68,7 +68,7 @@ struct Walk
       return;
     }
     ++evaluations;
-    const IntervalResult r = interval.evaluate(cell);
+    const IntervalResult r = walker.enclose(region, cell);
     // Points that raise a run-time error are outside (NaN is not >= 0): F < 0 wherever no
     // error occurs is enough to drop the cell. A NaN bound compares false: kept, split.
     if (r.value.hi < 0.0)
@@ -80,13 +80,14 @@ struct Walk
       include(cell);
       return;
     }
+    const RegionWalker::Region inner = walker.descend(region);
     const std::size_t k = static_cast<std::size_t>(level) % n;
     const Interval whole = cell[k];
     const double mid = 0.5 * (whole.lo + whole.hi);
     cell[k] = { whole.lo, mid };
-    visit(cell, level + 1);
+    visit(cell, level + 1, inner);
     cell[k] = { mid, whole.hi };
-    visit(cell, level + 1);
+    visit(cell, level + 1, inner);
     cell[k] = whole;
   }
 };
@@ -122,9 +123,9 @@ SolidBounds solid_bounds_in(const std::shared_ptr<const Tape>& tape,
   }
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = box.size();
-  Walk walk{ IntervalEvaluator(tape), n, depth * static_cast<int>(n), budget };
+  Walk walk{ RegionWalker(tape), n, depth * static_cast<int>(n), budget };
   std::vector<Interval> cell(box.begin(), box.end());
-  walk.visit(cell, 0);
+  walk.visit(cell, 0, walk.walker.root());
   SolidBounds result;
   result.status = walk.gave_up ? SolidBounds::Status::Unbounded
                 : walk.found   ? SolidBounds::Status::Bounded

@@ -151,14 +151,19 @@ RegionWalker::Level& RegionWalker::level_below(std::size_t depth, std::shared_pt
   return *below[depth];
 }
 
+bool RegionWalker::would_simplify(const Region& region) const
+{
+  const Level& level = *region.level_;
+  return walk_->options.simplify && level.simplifiable && level.throttle.worth_trying();
+}
+
 IntervalResult RegionWalker::enclose(const Region& region, std::span<const Interval> box,
   bool simplify)
 {
   Level& level = *region.level_;
   DepthState& state = walk_->at(region.depth_);
   state.enclosed = true;
-  state.recorded = simplify && walk_->options.simplify && level.simplifiable &&
-                   level.throttle.worth_trying();
+  state.recorded = simplify && would_simplify(region);
   ++statistics_.enclosures;
   const std::span<Choice> choices =
     state.recorded ? std::span<Choice>(level.choices) : std::span<Choice>();

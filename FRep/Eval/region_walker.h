@@ -109,6 +109,11 @@ public:
   /// what the box decides, for descend().
   IntervalResult enclose(const Region& region, std::span<const Interval> box, bool simplify = true);
 
+  /// Whether enclose() at `region` would record choices (simplification is on, the tape has
+  /// instructions a box can decide and its tries still pay): a walk that encloses only to
+  /// simplify can skip the enclosure when not.
+  bool would_simplify(const Region& region) const;
+
   /// The region for the boxes inside the box the last enclose() at `region` evaluated: the
   /// tape simplified for that box when it is at least an eighth shorter (worth_switching),
   /// else the same tape with the box's freeze. Without an enclose() before: the same tape.

@@ -1,7 +1,5 @@
 #include "Sample/tiled_evaluation.h"
 
-#include "Eval/block_runner.h"
-#include "Eval/jit_kernel.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
@@ -66,42 +64,14 @@ void fill_side(double* values, std::uint32_t* errors, std::size_t first, std::si
   }
 }
 
-/// `evaluator` bound to `tape`: made on first use, rebound (buffers kept) after.
-IntervalEvaluator& bound_interval(std::unique_ptr<IntervalEvaluator>& evaluator,
-  const std::shared_ptr<const Tape>& tape, bool trusted)
-{
-  if (evaluator)
-  {
-    evaluator->rebind(tape, trusted);
-  }
-  else
-  {
-    evaluator = std::make_unique<IntervalEvaluator>(tape);
-  }
-  return *evaluator;
-}
-
-/// `simplified` if it is worth evaluating instead of `from`, else `from`.
-std::shared_ptr<const Tape> better(std::shared_ptr<const Tape> simplified,
-  const std::shared_ptr<const Tape>& from)
-{
-  return simplified && worth_switching(*simplified, *from) ? simplified : from;
-}
-
 } // namespace
 
-/// What one pool participant keeps between tasks: its simplifier, the interval evaluator of its
-/// task's tape, one interval evaluator per depth of the walk and one batch runner, all rebound to
-/// each box's tape (no evaluator is made per box), and the gathered samples of a tile.
+/// What one pool participant keeps between tasks: its region walker (the tapes simplified per
+/// box, their interval evaluators and the batch runner, all rebound from box to box: no
+/// evaluator is made per box), and the gathered samples of a tile.
 struct TiledEvaluator::Worker
 {
-  TapeSimplifier simplifier;
-  std::unique_ptr<IntervalEvaluator> block_interval;
-  std::vector<std::unique_ptr<IntervalEvaluator>> intervals; // per depth of the walk
-  eval::BlockRunner runner;
-  eval::LazyKernel kernel; // of the runner's tape
-  std::shared_ptr<const Tape> kernel_tape;
-  std::vector<std::vector<Choice>> choices; // per depth of the recursion
+  RegionWalker walker;
   std::vector<std::vector<double>> in;
   std::vector<const double*> in_rows;
   std::vector<double> values;
@@ -109,29 +79,11 @@ struct TiledEvaluator::Worker
   std::vector<std::vector<double>> attributes;
   std::vector<double*> attribute_rows;
   std::vector<std::size_t> index;
-  std::size_t failures = 0;
-  std::size_t instructions = 0;
   std::size_t decided = 0;
 
-  /// The interval evaluator of depth `depth`, bound to `tape`.
-  IntervalEvaluator& interval_at(std::size_t depth, const std::shared_ptr<const Tape>& tape,
-    bool trusted)
+  Worker(const std::shared_ptr<const Tape>& tape, const RegionWalkerOptions& options)
+    : walker(tape, options)
   {
-    if (intervals.size() <= depth)
-    {
-      intervals.resize(depth + 1);
-    }
-    return bound_interval(intervals[depth], tape, trusted);
-  }
-
-  std::vector<Choice>& choices_at(std::size_t depth, std::size_t size)
-  {
-    if (choices.size() <= depth)
-    {
-      choices.resize(depth + 1);
-    }
-    choices[depth].resize(size);
-    return choices[depth];
   }
 
   void size_buffers(std::size_t dimension, std::size_t samples, std::size_t attribute_count)
@@ -256,8 +208,13 @@ struct TiledEvaluator::Walk
   std::size_t task_samples;
   bool sign_only;
   double iso;
-  bool jit;
-  const Tape* original; // the evaluator's own tape (checked); the others are simplified ones
+
+  /// Whether a box's enclosure is of use: to decide its samples' side (sign_only) or to simplify
+  /// the tape (a tape whose boxes stopped paying for it, like a blend, is not enclosed at all).
+  bool enclosing(const RegionWalker::Region& region) const
+  {
+    return sign_only || w.walker.would_simplify(region);
+  }
 
   /// With sign_only, fills the rectangle with the bound when the box's enclosure decides it.
   bool decided(const Rectangle& r, const IntervalResult& enclosure)
@@ -297,8 +254,7 @@ struct TiledEvaluator::Walk
     return b;
   }
 
-  void leaf(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
-    std::size_t depth)
+  void leaf(const Rectangle& r, const RegionWalker::Region& region)
   {
     w.index.clear();
     for_each_segment(runs, r,
@@ -321,22 +277,12 @@ struct TiledEvaluator::Walk
       const auto [lo, hi] = std::minmax_element(column, column + n);
       b[k] = { *lo, *hi };
     }
-    std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-    if (decided(r, iv.evaluate(b, choices)))
+    if (enclosing(region) && decided(r, w.walker.enclose(region, b)))
     {
       return;
     }
-    const std::shared_ptr<const Tape> leaf_tape = better(w.simplifier.simplify(*tape, choices), tape);
-    if (w.kernel_tape != leaf_tape)
-    {
-      w.kernel.reset();
-      w.kernel_tape = leaf_tape;
-    }
-    w.runner.bind(leaf_tape, leaf_tape.get() != original,
-      jit ? w.kernel.get(*leaf_tape, n) : nullptr);
-    w.failures += w.runner.evaluate(w.in_rows, n, w.values.data(), w.errors.data(),
+    w.walker.evaluate(w.walker.descend(region), w.in_rows, n, w.values.data(), w.errors.data(),
       std::span<double* const>(w.attribute_rows));
-    w.instructions += n * leaf_tape->code.size();
     for (std::size_t i = 0; i < n; ++i)
     {
       const std::size_t p = w.index[i];
@@ -355,8 +301,7 @@ struct TiledEvaluator::Walk
     }
   }
 
-  void node(const Rectangle& r, const std::shared_ptr<const Tape>& tape, IntervalEvaluator& iv,
-    std::size_t depth)
+  void node(const Rectangle& r, const RegionWalker::Region& region)
   {
     std::size_t samples = 0;
     const std::vector<Interval> b = box_of(r, samples);
@@ -366,26 +311,23 @@ struct TiledEvaluator::Walk
     }
     if (samples <= leaf_samples)
     {
-      leaf(r, tape, iv, depth);
+      leaf(r, region);
       return;
     }
-    std::vector<Choice>& choices = w.choices_at(depth, tape->code.size());
-    if (decided(r, iv.evaluate(b, choices)))
+    if (enclosing(region) && decided(r, w.walker.enclose(region, b)))
     {
       return;
     }
-    std::shared_ptr<const Tape> below = better(w.simplifier.simplify(*tape, choices), tape);
-    IntervalEvaluator* below_iv =
-      below == tape ? &iv : &w.interval_at(depth + 1, below, below.get() != original);
+    const RegionWalker::Region below = w.walker.descend(region);
     for (const Rectangle& child : children(r, tile))
     {
       if (tasks && samples_in(child) <= task_samples)
       {
-        tasks->push_back({ child, below });
+        tasks->push_back({ child, w.walker.tape(below) });
       }
       else
       {
-        node(child, below, *below_iv, depth + 1);
+        node(child, below);
       }
     }
   }
@@ -398,6 +340,18 @@ struct TiledEvaluator::Walk
   }
 };
 
+namespace
+{
+
+RegionWalkerOptions walk_options(const TileOptions& options)
+{
+  RegionWalkerOptions o;
+  o.jit = options.jit;
+  return o;
+}
+
+} // namespace
+
 TiledEvaluator::TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr<ThreadPool> pool,
   const TileOptions& options)
   : tape_(std::move(tape))
@@ -405,10 +359,8 @@ TiledEvaluator::TiledEvaluator(std::shared_ptr<const Tape> tape, std::shared_ptr
   , tile_(std::max(1, options.tile))
   , sign_only_(options.sign_only)
   , iso_(options.iso)
-  , jit_(options.jit)
-  , block_interval_(tape_)
-  , block_choices_(tape_->code.size())
-  , top_(std::make_unique<Worker>())
+  , walk_options_(walk_options(options))
+  , top_(std::make_unique<Worker>(tape_, walk_options_))
 {
   if (!pool_)
   {
@@ -438,11 +390,13 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
   {
     throw std::invalid_argument("TiledEvaluator: sign_only gives no attributes");
   }
+  reset_counters();
 
-  // The block: one simplification of the whole tape.
+  // The block: one simplification of the whole tape, on the caller's walker.
+  RegionWalker& top_walker = top_->walker;
   std::vector<Interval> box = empty_box(dimension);
   grow(box, coordinates, 0, count);
-  const IntervalResult enclosure = block_interval_.evaluate(box, block_choices_);
+  const IntervalResult enclosure = top_walker.enclose(top_walker.root(), box);
   double bound = 0.0;
   if (sign_only_ && decides_side(enclosure, iso_, bound))
   {
@@ -450,32 +404,26 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
     decided_ += count;
     return 0;
   }
-  const std::shared_ptr<const Tape> block_tape =
-    better(block_simplifier_.simplify(*tape_, block_choices_), tape_);
+  const RegionWalker::Region block = top_walker.descend(top_walker.root());
 
   // The block is cut serially (simplifying as it goes) into tasks of at most (4 tile)^2 samples;
   // the tasks run on the pool, each a quadtree down to tiles of tile^2 samples.
   const std::size_t tile = static_cast<std::size_t>(tile_);
-  reset_counters();
   const std::size_t leaf_samples = tile * tile;
-
-  // Serially on the caller: the block down to tasks (the caller's scratch is top_).
   std::vector<Task> tasks;
   const std::size_t task_samples = 16 * tile * tile;
   const Rectangle whole = bounding_rectangle(runs);
   {
     Walk top{ runs, coordinates, leaf_samples, tile, values, errors, attributes, *top_, &tasks,
-      task_samples, sign_only_, iso_, jit_, tape_.get() };
+      task_samples, sign_only_, iso_ };
     top_->size_buffers(dimension, leaf_samples, attributes.size());
     if (top.samples_in(whole) <= task_samples)
     {
-      tasks.push_back({ whole, block_tape });
+      tasks.push_back({ whole, top_walker.tape(block) });
     }
     else
     {
-      IntervalEvaluator& block_interval =
-        bound_interval(top_->block_interval, block_tape, block_tape != tape_);
-      top.node(whole, block_tape, block_interval, 0);
+      top.node(whole, block);
     }
   }
   pool_->parallel_for(tasks.size(),
@@ -484,27 +432,26 @@ std::size_t TiledEvaluator::evaluate(std::span<const double* const> inputs,
       std::unique_ptr<Worker>& mine = workers_[static_cast<std::size_t>(slot)];
       if (!mine)
       {
-        mine = std::make_unique<Worker>();
+        mine = std::make_unique<Worker>(tape_, walk_options_);
       }
       Worker& w = *mine;
-      IntervalEvaluator& task_interval =
-        bound_interval(w.block_interval, tasks[t].tape, tasks[t].tape != tape_);
       w.size_buffers(dimension, leaf_samples, attributes.size());
       Walk walk{ runs, coordinates, leaf_samples, tile, values, errors, attributes, w, nullptr, 0,
-        sign_only_, iso_, jit_, tape_.get() };
-      walk.node(tasks[t].rectangle, tasks[t].tape, task_interval, 0);
+        sign_only_, iso_ };
+      walk.node(tasks[t].rectangle, w.walker.root(tasks[t].tape));
     });
   return gather_counters();
 }
 
 void TiledEvaluator::reset_counters()
 {
+  top_->walker.reset_statistics();
+  top_->decided = 0;
   for (auto& w : workers_)
   {
     if (w)
     {
-      w->failures = 0;
-      w->instructions = 0;
+      w->walker.reset_statistics();
       w->decided = 0;
     }
   }
@@ -512,17 +459,19 @@ void TiledEvaluator::reset_counters()
 
 std::size_t TiledEvaluator::gather_counters()
 {
-  std::size_t failures = top_->failures;
-  instructions_ += top_->instructions;
-  decided_ += top_->decided;
-  top_->failures = top_->instructions = top_->decided = 0;
+  std::size_t failures = 0;
+  const auto gather = [&](const Worker& w)
+  {
+    failures += w.walker.statistics().failed_points;
+    instructions_ += w.walker.statistics().instructions;
+    decided_ += w.decided;
+  };
+  gather(*top_);
   for (const auto& w : workers_)
   {
     if (w)
     {
-      failures += w->failures;
-      instructions_ += w->instructions;
-      decided_ += w->decided;
+      gather(*w);
     }
   }
   return failures;

@@ -9,8 +9,7 @@
 
 #include "Compiler/tape.h"
 #include "Eval/batch_evaluator.h"
-#include "Eval/interval_evaluator.h"
-#include "Eval/tape_simplifier.h"
+#include "Eval/region_walker.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -74,7 +73,7 @@ private:
   struct Task;
   struct Walk;
 
-  void reset_counters();          // the workers' failures, instructions and decided samples
+  void reset_counters();          // the walkers' statistics and the decided samples
   std::size_t gather_counters();  // into the totals; returns the failures of this evaluate
 
   std::shared_ptr<const Tape> tape_;
@@ -82,10 +81,7 @@ private:
   int tile_;
   bool sign_only_;
   double iso_;
-  bool jit_;
-  IntervalEvaluator block_interval_;
-  TapeSimplifier block_simplifier_;
-  std::vector<Choice> block_choices_;
+  RegionWalkerOptions walk_options_;
   std::vector<std::unique_ptr<Worker>> workers_;
   std::unique_ptr<Worker> top_; // the caller's scratch for the serial top of the quadtree
   std::size_t instructions_ = 0;

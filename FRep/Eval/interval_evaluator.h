@@ -108,36 +108,4 @@ private:
   std::vector<std::uint32_t> losers_;              // instructions some reader dominates
 };
 
-/// A box's freeze for the boxes inside it, made when one of them first asks (walks decide many
-/// boxes inside without an interval: marched, sampled), and only kept where it skips something
-/// (evaluating with a freeze costs a check per instruction): else the enclosing box's.
-class LazyFreeze
-{
-public:
-  /// `evaluator` evaluated the box last with `outer` and recorded into `inner`.
-  LazyFreeze(IntervalEvaluator& evaluator, const IntervalFreeze* outer, IntervalFreeze& inner)
-    : evaluator_(&evaluator)
-    , outer_(outer)
-    , inner_(&inner)
-  {
-  }
-  /// The freeze to evaluate a box inside with (null: none).
-  const IntervalFreeze* get()
-  {
-    if (!tried_)
-    {
-      tried_ = true;
-      made_ = evaluator_->make_freeze(outer_, *inner_) && inner_->skipped > 0 ? inner_ : outer_;
-    }
-    return made_;
-  }
-
-private:
-  IntervalEvaluator* evaluator_;
-  const IntervalFreeze* outer_;
-  IntervalFreeze* inner_;
-  const IntervalFreeze* made_ = nullptr;
-  bool tried_ = false;
-};
-
 } // namespace frep

@@ -14,6 +14,58 @@
 namespace frep
 {
 
+/// A box's freeze for the boxes inside it, made when one of them first asks (walks decide many
+/// boxes inside without an interval: marched, sampled), and only kept where it skips something
+/// (evaluating with a freeze costs a check per instruction): else the enclosing box's.
+class RegionWalker::LazyFreeze
+{
+public:
+  /// `evaluator` evaluated the box last with `outer` and recorded into `inner`.
+  LazyFreeze(IntervalEvaluator& evaluator, const IntervalFreeze* outer, IntervalFreeze& inner)
+    : evaluator_(&evaluator)
+    , outer_(outer)
+    , inner_(&inner)
+  {
+  }
+  /// The freeze to evaluate a box inside with (null: none).
+  const IntervalFreeze* get()
+  {
+    if (!tried_)
+    {
+      tried_ = true;
+      made_ = evaluator_->make_freeze(outer_, *inner_) && inner_->skipped > 0 ? inner_ : outer_;
+    }
+    return made_;
+  }
+
+private:
+  IntervalEvaluator* evaluator_;
+  const IntervalFreeze* outer_;
+  IntervalFreeze* inner_;
+  const IntervalFreeze* made_ = nullptr;
+  bool tried_ = false;
+};
+
+namespace
+{
+
+/// Whether a walk should keep trying to simplify a tape for its boxes: after 16 attempts, only
+/// while at least one in 8 paid (a tape whose boxes never simplify, such as an R-function blend,
+/// stops paying for a copy of itself per box). One per tape a walk holds; reset with the tape.
+struct SimplifyThrottle
+{
+  int attempts = 0;
+  int successes = 0;
+  bool worth_trying() const { return attempts < 16 || successes * 8 >= attempts; }
+  void record(bool paid)
+  {
+    ++attempts;
+    successes += paid ? 1 : 0;
+  }
+};
+
+} // namespace
+
 /// A tape and what evaluates it: the walker's tape at the root, a simplified one below a region
 /// that decided some of its instructions.
 struct RegionWalker::Level
@@ -51,17 +103,17 @@ struct RegionWalker::Level
   }
 };
 
-/// What the last enclose() at one depth left for descend().
-struct DepthState
-{
-  IntervalFreeze inner;          // the box's enclosures, recorded for its freeze
-  std::optional<LazyFreeze> own; // the freeze handed to the regions inside
-  bool enclosed = false;         // enclose() ran and descend() has not consumed it
-  bool recorded = false;         // ... and recorded choices
-};
-
 struct RegionWalker::Walk
 {
+  /// What the last enclose() at one depth left for descend().
+  struct DepthState
+  {
+    IntervalFreeze inner;          // the box's enclosures, recorded for its freeze
+    std::optional<LazyFreeze> own; // the freeze handed to the regions inside
+    bool enclosed = false;         // enclose() ran and descend() has not consumed it
+    bool recorded = false;         // ... and recorded choices
+  };
+
   RegionWalkerOptions options;
   Level root;
   std::unique_ptr<Level> entry;              // root(tape) for another tape
@@ -161,7 +213,7 @@ IntervalResult RegionWalker::enclose(const Region& region, std::span<const Inter
   bool simplify)
 {
   Level& level = *region.level_;
-  DepthState& state = walk_->at(region.depth_);
+  Walk::DepthState& state = walk_->at(region.depth_);
   state.enclosed = true;
   state.recorded = simplify && would_simplify(region);
   ++statistics_.enclosures;
@@ -179,7 +231,7 @@ RegionWalker::Region RegionWalker::descend(const Region& region)
 {
   Level& level = *region.level_;
   const std::size_t depth = region.depth_;
-  DepthState& state = walk_->at(depth);
+  Walk::DepthState& state = walk_->at(depth);
   const bool enclosed = state.enclosed;
   state.enclosed = false;
   Region inner;

@@ -69,6 +69,9 @@ struct RegionWalkerStatistics
 
 class RegionWalker
 {
+  struct Level;     // a tape and what evaluates it (region_walker.cpp)
+  class LazyFreeze; // what a region lets the regions inside skip
+
 public:
   /// `tape` is checked once (eval::check_tape; throws std::invalid_argument like the
   /// evaluators when it is not valid). Not thread-safe: one walker per thread.
@@ -77,7 +80,6 @@ public:
   RegionWalker(const RegionWalker&) = delete;
   RegionWalker& operator=(const RegionWalker&) = delete;
 
-  struct Level;
   /// A region's place in the walk: its tape and depth, and what the region around it lets it
   /// skip. A small value the walker hands out; valid during the depth-first walk below the
   /// region that made it.

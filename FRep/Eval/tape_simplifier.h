@@ -46,21 +46,6 @@ bool may_simplify(const Tape& tape);
 /// per box cost more than the instructions saved; measured with Benchmarks/frep_mesh_benchmark).
 bool worth_switching(const Tape& simplified, const Tape& from);
 
-/// Whether a walk should keep trying to simplify a tape for its boxes: after 16 attempts, only
-/// while at least one in 8 paid (a tape whose boxes never simplify, such as an R-function blend,
-/// stops paying for a copy of itself per box). One per tape a walk holds; reset with the tape.
-struct SimplifyThrottle
-{
-  int attempts = 0;
-  int successes = 0;
-  bool worth_trying() const { return attempts < 16 || successes * 8 >= attempts; }
-  void record(bool paid)
-  {
-    ++attempts;
-    successes += paid ? 1 : 0;
-  }
-};
-
 /// Reusable scratch for simplify(): one per thread (simplification allocates nothing once the
 /// scratch has grown to the tape's size, except the result).
 class TapeSimplifier

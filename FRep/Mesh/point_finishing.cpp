@@ -5,9 +5,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
-#include "Eval/block_runner.h"
-#include "Eval/jit_kernel.h"
-#include "Eval/tape_simplifier.h"
+#include "Eval/region_walker.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
@@ -265,47 +263,27 @@ std::array<Interval, 3> probe_box(const GridFrame& frame, const std::array<std::
 /// evaluators, the simplifier, and the runner, interval evaluator and kernel of the bricks' tapes.
 struct BrickParticipant
 {
-  std::shared_ptr<ThreadPool> caller_only = std::make_shared<ThreadPool>(1);
-  IntervalEvaluator interval;
-  std::vector<Choice> choices, brick_choices;
-  TapeSimplifier simplifier;
-  std::unique_ptr<BatchEvaluator> full;
-  // The bricks' simplified tapes: one runner, interval evaluator and kernel rebound per brick
-  // (a batch evaluator per brick checked its tape and compiled it into fresh memory each time).
-  std::unique_ptr<IntervalEvaluator> super_interval;
-  eval::BlockRunner runner;
-  eval::LazyKernel kernel;
-  std::shared_ptr<const Tape> kernel_tape;
+  // The full tape at the root, a super-brick's simplified tape below it and a brick's below
+  // that: rebound from brick to brick (no evaluator or kernel is made per brick).
+  RegionWalker walker;
   std::array<std::vector<double>, 3> in;
   std::vector<double> values;
-  bool jit = true;
 
-  /// F of the simplified `brick` tape at `n` points, on this thread.
-  void evaluate_brick(const std::shared_ptr<const Tape>& brick,
-    const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+  BrickParticipant(const std::shared_ptr<const Tape>& tape, bool jit)
+    : walker(tape, walk_options(jit))
   {
-    if (kernel_tape != brick)
-    {
-      kernel.reset();
-      kernel_tape = brick;
-    }
-    runner.bind(brick, true, jit ? kernel.get(*brick, n) : nullptr);
-    runner.evaluate(inputs, n, out, nullptr, {});
   }
-
-  BrickParticipant(const std::shared_ptr<const Tape>& tape, bool jit_wanted)
-    : interval(tape)
-    , choices(tape->code.size())
-    , jit(jit_wanted)
+  static RegionWalkerOptions walk_options(bool jit)
   {
-    full = std::make_unique<BatchEvaluator>(tape, options());
-  }
-  BatchOptions options() const
-  {
-    BatchOptions o;
-    o.pool = caller_only;
+    RegionWalkerOptions o;
     o.jit = jit;
     return o;
+  }
+  /// F of the region's tape at `n` points, on this thread.
+  auto evaluator(const RegionWalker::Region& region)
+  {
+    return [this, region](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
+    { walker.evaluate(region, inputs, n, out); };
   }
 };
 
@@ -416,36 +394,21 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
       }
       BrickParticipant& pt = *mine;
       const std::size_t begin = super_begin[g], end = super_begin[g + 1];
-      if (order[begin].super == kNoBrick)
-      {
-        probe_normals(
-          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
-          { pt.full->evaluate(inputs, n, out); },
-          std::span<const std::size_t>(ids.data() + begin, end - begin), h, surface, missing,
-          pt.in, pt.values);
-        return;
-      }
+      const RegionWalker::Region root = pt.walker.root();
       const std::span<const std::size_t> all(ids.data() + begin, end - begin);
-      pt.interval.evaluate(probe_box(frame, corner(ids[begin], super), super, h), pt.choices);
-      const std::shared_ptr<const Tape> super_tape = pt.simplifier.simplify(*tape, pt.choices);
-      if (!super_tape || !worth_switching(*super_tape, *tape))
+      // A cell-centre point (no brick), or the full tape's super-bricks stopped simplifying.
+      if (order[begin].super == kNoBrick || !pt.walker.would_simplify(root))
       {
-        probe_normals(
-          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
-          { pt.full->evaluate(inputs, n, out); },
-          all, h, surface, missing, pt.in, pt.values);
+        probe_normals(pt.evaluator(root), all, h, surface, missing, pt.in, pt.values);
         return;
       }
-      if (pt.super_interval)
+      pt.walker.enclose(root, probe_box(frame, corner(ids[begin], super), super, h));
+      const RegionWalker::Region in_super = pt.walker.descend(root);
+      if (pt.walker.tape(in_super) == tape)
       {
-        pt.super_interval->rebind(super_tape, true);
+        probe_normals(pt.evaluator(in_super), all, h, surface, missing, pt.in, pt.values);
+        return;
       }
-      else
-      {
-        pt.super_interval = std::make_unique<IntervalEvaluator>(super_tape);
-      }
-      IntervalEvaluator& super_interval = *pt.super_interval;
-      pt.brick_choices.resize(super_tape->code.size());
       for (std::size_t b = begin; b < end;)
       {
         std::size_t e = b;
@@ -454,16 +417,9 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
           ++e;
         }
         const std::span<const std::size_t> group(ids.data() + b, e - b);
-        super_interval.evaluate(probe_box(frame, corner(ids[b], brick), brick, h), pt.brick_choices);
-        std::shared_ptr<const Tape> brick_tape = pt.simplifier.simplify(*super_tape, pt.brick_choices);
-        if (!brick_tape || !worth_switching(*brick_tape, *super_tape))
-        {
-          brick_tape = super_tape;
-        }
-        probe_normals(
-          [&](const std::array<const double*, 3>& inputs, std::size_t n, double* out)
-          { pt.evaluate_brick(brick_tape, inputs, n, out); },
-          group, h, surface, missing, pt.in, pt.values);
+        pt.walker.enclose(in_super, probe_box(frame, corner(ids[b], brick), brick, h));
+        probe_normals(pt.evaluator(pt.walker.descend(in_super)), group, h, surface, missing, pt.in,
+          pt.values);
         b = e;
       }
     });

@@ -2,18 +2,30 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace frep::raycast::detail
 {
 
-PieceTracer::Level::Level(std::shared_ptr<const Tape> t)
-  : tape(std::move(t))
-  , interval(tape)
-  , choices(tape->code.size())
-  , simplifiable(may_simplify(*tape))
+namespace
 {
+
+RegionWalkerOptions walk_options(const TraceOptions& options)
+{
+  RegionWalkerOptions o;
+  o.simplify = options.simplify_area > 0;
+  // A freeze at every other depth (the other pieces pass their parent's on): making one costs
+  // about half an interval evaluation and one level adds little (meta5d 600x600 ray cast 0.92
+  // -> 0.87 s, the four key shapes 1-6 % faster; every third depth: 0.88 s).
+  o.freeze = true;
+  o.freeze_every = 2;
+  // The root's tape runs every march and refinement of the image, in batches of a few rays'
+  // steps: compile it at once rather than after a thousand samples.
+  o.compile_root_now = true;
+  o.block = 64;
+  return o;
 }
+
+} // namespace
 
 namespace
 {
@@ -30,8 +42,7 @@ PieceTracer::PieceTracer(std::shared_ptr<const Tape> tape,
   , box_(clip)
   , view_(view)
   , options_(options)
-  , root_(std::move(tape))
-  , caller_only_(std::make_shared<ThreadPool>(1))
+  , walker_(std::move(tape), walk_options(options))
 {
 }
 
@@ -74,7 +85,7 @@ void PieceTracer::trace_tile(int x0, int y0, int x1, int y1, std::span<Hit> hits
   }
   if (open_ > 0)
   {
-    piece(x0, y0, x1, y1, l0, l1, root_);
+    piece(x0, y0, x1, y1, l0, l1, walker_.root());
   }
 }
 
@@ -105,28 +116,15 @@ void PieceTracer::push_point(const Ray& ray, double lambda)
   zs_.push_back(std::clamp(ray.o[2] + lambda * ray.d[2], box_[2].lo, box_[2].hi));
 }
 
-void PieceTracer::evaluate_points(Level& level)
+void PieceTracer::evaluate_points(const RegionWalker::Region& region)
 {
   values_.resize(xs_.size());
   if (xs_.empty())
   {
     return;
   }
-  if (!level.batch)
-  {
-    BatchOptions options;
-    options.pool = caller_only_;
-    options.block_size = 64;
-    level.batch = std::make_unique<BatchEvaluator>(level.tape, options);
-    if (&level == &root_)
-    {
-      // The root's tape runs every march and refinement of the image: compile it now rather
-      // than at the first batch of 512 points (batches here are a few rays' steps).
-      level.batch->compiled();
-    }
-  }
   const double* inputs[3] = { xs_.data(), ys_.data(), zs_.data() };
-  level.batch->evaluate(inputs, xs_.size(), values_.data());
+  walker_.evaluate(region, inputs, xs_.size(), values_.data());
   stats_.point_evaluations += xs_.size();
 }
 
@@ -143,7 +141,7 @@ void PieceTracer::bracket(std::size_t ray, double outside, double f_out, bool ou
     .in_known = in_known });
 }
 
-void PieceTracer::refine_brackets(Level& level)
+void PieceTracer::refine_brackets(const RegionWalker::Region& region)
 {
   if (brackets_.empty())
   {
@@ -164,7 +162,7 @@ void PieceTracer::refine_brackets(Level& level)
       push_point(rays_[b.ray], b.inside);
     }
   }
-  evaluate_points(level);
+  evaluate_points(region);
   std::size_t v = 0;
   for (Bracket& b : brackets_)
   {
@@ -214,7 +212,7 @@ void PieceTracer::refine_brackets(Level& level)
     {
       break;
     }
-    evaluate_points(level);
+    evaluate_points(region);
     v = 0;
     for (Bracket& b : brackets_)
     {
@@ -247,7 +245,8 @@ void PieceTracer::refine_brackets(Level& level)
   brackets_.clear();
 }
 
-void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1, Level& level)
+void PieceTracer::march(
+  std::span<const std::size_t> which, double l0, double l1, const RegionWalker::Region& region)
 {
   // Every step of every ray in one batch (the SIMD kernel), then each ray's first sign change.
   xs_.clear();
@@ -274,7 +273,7 @@ void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1
   {
     return;
   }
-  evaluate_points(level);
+  evaluate_points(region);
   // (the brackets' refinement reuses the point buffers: the march's values are read first)
   for (const March& m : marches_)
   {
@@ -312,10 +311,11 @@ void PieceTracer::march(std::span<const std::size_t> which, double l0, double l1
       ray.outside = m.end;
     }
   }
-  refine_brackets(level);
+  refine_brackets(region);
 }
 
-void PieceTracer::solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level)
+void PieceTracer::solid(
+  int x0, int y0, int x1, int y1, double l0, double l1, const RegionWalker::Region& region)
 {
   for (int y = y0; y < y1; ++y)
   {
@@ -342,7 +342,7 @@ void PieceTracer::solid(int x0, int y0, int x1, int y1, double l0, double l1, Le
       }
     }
   }
-  refine_brackets(level);
+  refine_brackets(region);
 }
 
 double PieceTracer::march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const
@@ -363,8 +363,8 @@ double PieceTracer::march_steps(int x0, int y0, int x1, int y1, double l0, doubl
   return steps;
 }
 
-void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
-  LazyFreeze* link, std::size_t level_depth)
+void PieceTracer::piece(
+  int x0, int y0, int x1, int y1, double l0, double l1, const RegionWalker::Region& region)
 {
   // The depths the open rays of the piece still search.
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -405,27 +405,18 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
         }
       }
     }
-    march(std::span<const std::size_t>(which, n), l0, l1, level);
+    march(std::span<const std::size_t>(which, n), l0, l1, region);
     return;
   }
 
-  std::array<Interval, 3> region;
-  if (!piece_box(view_, x0, x1, y0, y1, l0, l1, box_, region))
+  std::array<Interval, 3> region_box;
+  if (!piece_box(view_, x0, x1, y0, y1, l0, l1, box_, region_box))
   {
     return;
   }
   const int area = (x1 - x0) * (y1 - y0);
-  const bool record = level.worth_trying() && options_.simplify_area > 0 &&
-                      area >= options_.simplify_area;
   ++stats_.interval_evaluations;
-  while (freezes_.size() <= level_depth)
-  {
-    freezes_.emplace_back();
-  }
-  IntervalFreeze& inner = freezes_[level_depth];
-  const IntervalFreeze* freeze = link ? link->get() : nullptr;
-  const IntervalResult r = level.interval.evaluate(
-    region, record ? std::span<Choice>(level.choices) : std::span<Choice>(), freeze, &inner);
+  const IntervalResult r = walker_.enclose(region, region_box, area >= options_.simplify_area);
   if (r.value.hi < 0.0)
   {
     // Empty for every ray: each knows a depth outside, for the bisection of a solid piece behind.
@@ -444,30 +435,13 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   }
   if (r.value.lo >= 0.0 && !r.may_fail)
   {
-    solid(x0, y0, x1, y1, l0, l1, level);
+    solid(x0, y0, x1, y1, l0, l1, region);
     return;
   }
 
-  // Ambiguous: maybe a shorter tape for everything below, then split.
-  std::optional<Level> child;
-  if (record)
-  {
-    std::shared_ptr<const Tape> simplified = simplifier_.simplify(*level.tape, level.choices);
-    const bool paid = simplified && worth_switching(*simplified, *level.tape);
-    level.throttle.record(paid);
-    if (paid)
-    {
-      child.emplace(std::move(simplified));
-    }
-  }
-  Level& use = child ? *child : level;
-  // The same tape below: what this piece dominates need not be evaluated again inside it. A
-  // freeze is made at every other depth (the other pieces pass their parent's on): making one
-  // costs about half an interval evaluation and one level adds little (meta5d 600x600 ray cast
-  // 0.92 -> 0.87 s, the four key shapes 1-6 % faster; every third depth: 0.88 s).
-  LazyFreeze own(level.interval, freeze, inner);
-  LazyFreeze* below = child ? nullptr : (link && level_depth % 2 == 1 ? link : &own);
-
+  // Ambiguous: maybe a shorter tape for everything below (or what this piece dominates need
+  // not be evaluated again inside it), then split.
+  const RegionWalker::Region use = walker_.descend(region);
   const int w = x1 - x0, h = y1 - y0;
   const double width = std::max(w, h) * view_.footprint(l1);
   const double depth = l1 - l0;
@@ -477,10 +451,10 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
     if (depth > options_.leaf_depth * view_.footprint(l1) && depth > 0.0)
     {
       const double mid = 0.5 * (l0 + l1);
-      piece(x0, y0, x1, y1, l0, mid, use, below, level_depth + 1);
+      piece(x0, y0, x1, y1, l0, mid, use);
       if (!rays_[i].done)
       {
-        piece(x0, y0, x1, y1, mid, l1, use, below, level_depth + 1);
+        piece(x0, y0, x1, y1, mid, l1, use);
       }
       return;
     }
@@ -490,22 +464,22 @@ void PieceTracer::piece(int x0, int y0, int x1, int y1, double l0, double l1, Le
   if (depth > 2.0 * width)
   {
     const double mid = 0.5 * (l0 + l1);
-    piece(x0, y0, x1, y1, l0, mid, use, below, level_depth + 1);
-    piece(x0, y0, x1, y1, mid, l1, use, below, level_depth + 1);
+    piece(x0, y0, x1, y1, l0, mid, use);
+    piece(x0, y0, x1, y1, mid, l1, use);
     return;
   }
   const int xm = w > 1 ? x0 + w / 2 : x1, ym = h > 1 ? y0 + h / 2 : y1;
-  piece(x0, y0, xm, ym, l0, l1, use, below, level_depth + 1);
+  piece(x0, y0, xm, ym, l0, l1, use);
   if (xm < x1)
   {
-    piece(xm, y0, x1, ym, l0, l1, use, below, level_depth + 1);
+    piece(xm, y0, x1, ym, l0, l1, use);
   }
   if (ym < y1)
   {
-    piece(x0, ym, xm, y1, l0, l1, use, below, level_depth + 1);
+    piece(x0, ym, xm, y1, l0, l1, use);
     if (xm < x1)
     {
-      piece(xm, ym, x1, y1, l0, l1, use, below, level_depth + 1);
+      piece(xm, ym, x1, y1, l0, l1, use);
     }
   }
 }

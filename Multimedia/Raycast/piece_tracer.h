@@ -1,18 +1,14 @@
 // Internal: the first root of F along every ray of a tile (see raycast.h, "How the first root is
-// found"). One tracer per thread: it owns its evaluators and the simplified tapes of the pieces
-// it is in.
+// found"). One tracer per thread: it owns its region walker (the simplified tapes of the pieces
+// it is in).
 #pragma once
 
 #include "Raycast/raycast.h"
 #include "Raycast/view_rays.h"
 
-#include "Eval/batch_evaluator.h"
-#include "Eval/interval_evaluator.h"
-#include "Eval/tape_simplifier.h"
-#include "Eval/thread_pool.h"
+#include "Eval/region_walker.h"
 
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <memory>
 #include <span>
@@ -74,19 +70,6 @@ public:
   const Statistics& statistics() const { return stats_; }
 
 private:
-  struct Level
-  {
-    std::shared_ptr<const Tape> tape;
-    IntervalEvaluator interval;
-    std::unique_ptr<BatchEvaluator> batch; // made when the level marches
-    std::vector<Choice> choices;
-    bool simplifiable = false;
-    // Simplifications tried from this level and how many paid: a tape whose pieces never
-    // simplify (R-function blends) stops paying for the attempt.
-    SimplifyThrottle throttle;
-    bool worth_trying() const { return simplifiable && throttle.worth_trying(); }
-    explicit Level(std::shared_ptr<const Tape> t);
-  };
   struct Ray
   {
     Vec3 o{}, d{};
@@ -95,35 +78,34 @@ private:
     bool done = true;
   };
 
-  /// `link`: what the enclosing piece's interval lets this one skip (IntervalFreeze; null: none,
-  /// or another tape); `level_depth`: in the recursion (a freeze per depth).
-  void piece(int x0, int y0, int x1, int y1, double l0, double l1, Level& level,
-    LazyFreeze* link = nullptr, std::size_t level_depth = 0);
+  /// `region`: the piece's place in the walk (its tape and what the pieces around it let it skip).
+  void piece(
+    int x0, int y0, int x1, int y1, double l0, double l1, const RegionWalker::Region& region);
   double march_steps(int x0, int y0, int x1, int y1, double l0, double l1) const;
-  void solid(int x0, int y0, int x1, int y1, double l0, double l1, Level& level);
+  void solid(
+    int x0, int y0, int x1, int y1, double l0, double l1, const RegionWalker::Region& region);
   /// Marches the rays `which` (indices into the tile) over [l0, l1], all steps in one batch.
-  void march(std::span<const std::size_t> which, double l0, double l1, Level& level);
+  void march(std::span<const std::size_t> which, double l0, double l1,
+    const RegionWalker::Region& region);
   /// The point of depth lambda of the ray, clamped into the box (where the tapes are exact),
   /// appended to xs_, ys_, zs_.
   void push_point(const Ray& ray, double lambda);
-  /// F at the points xs_, ys_, zs_ into values_ (the level's batch evaluator).
-  void evaluate_points(Level& level);
+  /// F at the points xs_, ys_, zs_ into values_ (the region's tape).
+  void evaluate_points(const RegionWalker::Region& region);
   /// Brackets the root of ray `ray` between a depth outside and one inside; a value not yet
   /// known is NaN with its `known` flag false. refine_brackets() finds every bracketed root.
   void bracket(std::size_t ray, double outside, double f_out, bool out_known, double inside,
     double f_in, bool in_known);
   /// Refines every pending bracket in lock step (one batch of points per step for all of them)
   /// and sets the rays' surface hits.
-  void refine_brackets(Level& level);
+  void refine_brackets(const RegionWalker::Region& region);
   void set_hit(Ray& ray, Hit& hit, double lambda, HitKind kind);
 
   std::array<Interval, 3> model_box_;
   std::array<Interval, 3> box_; // where rays search
   const ViewRays& view_;
   TraceOptions options_;
-  Level root_;
-  std::shared_ptr<ThreadPool> caller_only_; // the tracer runs on its caller's thread
-  TapeSimplifier simplifier_;
+  RegionWalker walker_; // the tapes simplified per piece, the freezes, the point evaluation
   struct March
   {
     std::size_t ray;
@@ -145,7 +127,6 @@ private:
     double next = 0.0;
   };
   std::vector<Bracket> brackets_;
-  std::deque<IntervalFreeze> freezes_; // per depth of the recursion (stable addresses)
   std::vector<double> xs_, ys_, zs_, values_;
   Statistics stats_;
   // The current tile.

@@ -332,4 +332,27 @@ public:
   }
 };
 
+/// `count` unit balls on a ring of `radius` about the z axis, joined by `join` (Max: a small
+/// box decides it; Union: never), with an error check (x > 100) that every box near the ring
+/// decides: most balls are far from any small box.
+inline std::shared_ptr<const Tape> ring_of_balls(Opcode join, int count, double radius)
+{
+  TapeBuilder b(3);
+  const auto x = b.input(0), y = b.input(1), z = b.input(2);
+  std::uint32_t f = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    const double angle = 2 * 3.14159265358979323846 * k / count;
+    const auto dx = b.op(Opcode::Sub, x, b.constant(radius * std::cos(angle)));
+    const auto dy = b.op(Opcode::Sub, y, b.constant(radius * std::sin(angle)));
+    const auto r2 = b.op(Opcode::Add,
+      b.op(Opcode::Add, b.op(Opcode::Square, dx), b.op(Opcode::Square, dy)),
+      b.op(Opcode::Square, z));
+    const auto ball = b.op(Opcode::Sub, b.constant(1.0), b.op(Opcode::Sqrt, r2));
+    f = k == 0 ? ball : b.op(join, f, ball);
+  }
+  b.error_if(b.op(Opcode::Gt, x, b.constant(100)));
+  return b.finish({ f });
+}
+
 } // namespace frep::test

@@ -273,26 +273,6 @@ namespace frep::test
 namespace
 {
 
-/// 40 balls on a ring, joined by `join` (Max or Union): most of them far from any small box.
-std::shared_ptr<const Tape> ring_of_balls(Opcode join)
-{
-  TapeBuilder b(3);
-  const auto x = b.input(0), y = b.input(1), z = b.input(2);
-  std::uint32_t f = 0;
-  for (int k = 0; k < 40; ++k)
-  {
-    const double angle = 2 * std::numbers::pi * k / 40;
-    const auto dx = b.op(Opcode::Sub, x, b.constant(8 * std::cos(angle)));
-    const auto dy = b.op(Opcode::Sub, y, b.constant(8 * std::sin(angle)));
-    const auto r2 = b.op(Opcode::Add, b.op(Opcode::Add, b.op(Opcode::Square, dx),
-      b.op(Opcode::Square, dy)), b.op(Opcode::Square, z));
-    const auto ball = b.op(Opcode::Sub, b.constant(1.0), b.op(Opcode::Sqrt, r2));
-    f = k == 0 ? ball : b.op(join, f, ball);
-  }
-  b.error_if(b.op(Opcode::Gt, x, b.constant(100))); // an error check stays evaluated
-  return b.finish({ f });
-}
-
 // Boxes inside boxes, three levels deep, each evaluated with its parent's freeze: the enclosure
 // holds F at points of the box (the freeze is sound; it need not contain the full evaluation's
 // enclosure, since the rules' rounding margins are not monotone in their operands' widths),
@@ -303,7 +283,7 @@ TEST(IntervalFreeze, NestedBoxesEncloseTheFullEvaluationAndSkipMostOfTheTape)
   std::mt19937_64 rng(5);
   for (const Opcode join : { Opcode::Max, Opcode::Union })
   {
-    const auto tape = ring_of_balls(join);
+    const auto tape = ring_of_balls(join, 40, 8.0);
     IntervalEvaluator frozen(tape), full(tape);
     PointEvaluator point(tape);
     std::size_t skipped = 0, boxes = 0;

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <stdexcept>
 
@@ -19,27 +18,10 @@ namespace frep
 namespace
 {
 
-using test::TapeBuilder;
-
-/// 24 balls on a ring, joined by `join` (Max: regions decide it; Union: they never do).
+/// 24 balls on a ring of radius 6 (Max: regions decide it; Union: they never do).
 std::shared_ptr<const Tape> ring(Opcode join)
 {
-  TapeBuilder b(3);
-  const auto x = b.input(0), y = b.input(1), z = b.input(2);
-  std::uint32_t f = 0;
-  for (int k = 0; k < 24; ++k)
-  {
-    const double angle = 2 * std::numbers::pi * k / 24;
-    const auto dx = b.op(Opcode::Sub, x, b.constant(6 * std::cos(angle)));
-    const auto dy = b.op(Opcode::Sub, y, b.constant(6 * std::sin(angle)));
-    const auto r2 = b.op(Opcode::Add,
-      b.op(Opcode::Add, b.op(Opcode::Square, dx), b.op(Opcode::Square, dy)),
-      b.op(Opcode::Square, z));
-    const auto ball = b.op(Opcode::Sub, b.constant(1.0), b.op(Opcode::Sqrt, r2));
-    f = k == 0 ? ball : b.op(join, f, ball);
-  }
-  b.error_if(b.op(Opcode::Gt, x, b.constant(100))); // decided by every region: may simplify
-  return b.finish({ f });
+  return test::ring_of_balls(join, 24, 6.0);
 }
 
 bool same_bits(double a, double b)
@@ -117,6 +99,14 @@ struct OctreeCheck
 
 const std::vector<Interval> kWhole{ { -8, 8 }, { -8, 8 }, { -8, 8 } };
 
+/// The octree walk of kWhole with `walker`, checked against `tape`.
+OctreeCheck walk_whole(RegionWalker& walker, const std::shared_ptr<const Tape>& tape)
+{
+  OctreeCheck check{ walker, PointEvaluator(tape) };
+  check.visit(walker.root(), kWhole);
+  return check;
+}
+
 TEST(RegionWalker, LeavesOfASimplifiedWalkHaveTheFullTapesValues)
 {
   for (const bool freeze : { false, true })
@@ -125,8 +115,7 @@ TEST(RegionWalker, LeavesOfASimplifiedWalkHaveTheFullTapesValues)
     RegionWalkerOptions options;
     options.freeze = freeze;
     RegionWalker walker(tape, options);
-    OctreeCheck check{ walker, PointEvaluator(tape) };
-    check.visit(walker.root(), kWhole);
+    const OctreeCheck check = walk_whole(walker, tape);
     EXPECT_GT(check.leaves, 100u);
     EXPECT_GT(check.culled, 100u);
     EXPECT_EQ(check.mismatches, 0u) << "freeze " << freeze;
@@ -145,8 +134,7 @@ TEST(RegionWalker, WithoutSimplificationEveryRegionRunsTheWalkersTape)
   RegionWalkerOptions options;
   options.simplify = false;
   RegionWalker walker(tape, options);
-  OctreeCheck check{ walker, PointEvaluator(tape) };
-  check.visit(walker.root(), kWhole);
+  const OctreeCheck check = walk_whole(walker, tape);
   EXPECT_EQ(check.mismatches, 0u);
   EXPECT_EQ(check.shorter_leaves, 0u);
   EXPECT_EQ(walker.statistics().simplify_tries, 0u);
@@ -158,8 +146,7 @@ TEST(RegionWalker, ATapeThatNeverPaysIsTriedSixteenTimes)
 {
   const auto tape = ring(Opcode::Union);
   RegionWalker walker(tape);
-  OctreeCheck check{ walker, PointEvaluator(tape) };
-  check.visit(walker.root(), kWhole);
+  const OctreeCheck check = walk_whole(walker, tape);
   EXPECT_EQ(check.mismatches, 0u);
   EXPECT_GT(walker.statistics().enclosures, 100u);
   EXPECT_EQ(walker.statistics().simplified, 0u);

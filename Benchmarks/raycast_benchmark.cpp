@@ -109,10 +109,12 @@ int main(int argc, char** argv)
   shape.tape = tape;
   shape.box = { frep::Interval{ -10, 10 }, frep::Interval{ -10, 10 }, frep::Interval{ -10, 10 } };
   frep::raycast::Style style;
-  style.render.threads = threads;
+  style.render.threads = threads; // the mesh renderer's, below
+  frep::RunControl run;
+  run.threads = threads;
   frep::render::Image ray_picture(width, height, { 1, 1, 1, 1 });
   const frep::raycast::Result r = frep::raycast::render(
-    ray_picture, camera, shape, with_floor ? &floor : nullptr, style);
+    ray_picture, camera, shape, with_floor ? &floor : nullptr, style, nullptr, run);
   if (!r.ok())
   {
     std::cerr << r.error << "\n";

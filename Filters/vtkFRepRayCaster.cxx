@@ -275,7 +275,6 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
   shape.colour = { colour.r, colour.g, colour.b };
   frep::raycast::Style style;
   style.render.supersample = this->Supersample;
-  style.render.threads = this->NumberOfThreads;
   style.self_shadows = this->SelfShadows != 0;
 
   const int width = in.Width, height = in.Height;
@@ -298,7 +297,9 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
     const std::thread::id executing = std::this_thread::get_id();
     std::atomic<bool> aborted{ false };
     std::atomic<bool> stopped{ false };
-    const auto cancel = [this, executing, &aborted, &stopped]
+    frep::RunControl run;
+    run.threads = this->NumberOfThreads;
+    run.cancel = [this, executing, &aborted, &stopped]
     {
       if (std::this_thread::get_id() == executing && this->CheckAbort())
       {
@@ -313,10 +314,14 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
       return stop;
     };
     // Progress comes on this thread only (raycast::render's promise): UpdateProgress is safe.
-    const auto progress = [this](double fraction) { this->UpdateProgress(fraction); };
+    run.progress = [this](double fraction)
+    {
+      this->UpdateProgress(fraction);
+      return true;
+    };
     in.Fit(*this, shape); // the camera and the floor, now that the tape is known
     const frep::raycast::Result result = frep::raycast::render(
-      picture, in.Camera, shape, in.Floor ? &*in.Floor : nullptr, style, &depth, cancel, progress);
+      picture, in.Camera, shape, in.Floor ? &*in.Floor : nullptr, style, &depth, run);
     this->Rays = result.statistics.rays;
     this->Hits = result.statistics.hits;
     if (!result.ok())

@@ -70,10 +70,12 @@ QImage section_picture(const SectionPictureRequest& request,
       std::copy(colour.begin(), colour.end(), picture.pixel(x, y));
   }
   frep::raycast::Style style;
-  style.render.threads = request.threads;
   style.render.supersample = std::clamp(request.supersample, 1, 4);
-  const frep::raycast::Result result = frep::raycast::render(picture, request.camera, shape,
-    nullptr, style, nullptr, [&keep_going] { return keep_going && !keep_going(); });
+  frep::RunControl run;
+  run.threads = request.threads;
+  run.cancel = [&keep_going] { return keep_going && !keep_going(); };
+  const frep::raycast::Result result =
+    frep::raycast::render(picture, request.camera, shape, nullptr, style, nullptr, run);
   if (!result.ok() || (keep_going && !keep_going()))
     return {};
   return to_qimage(picture);

@@ -166,8 +166,10 @@ int run_render(const RenderOptions& options)
 
   frep::raycast::Style style;
   style.render.supersample = options.supersample;
-  style.render.threads = options.threads;
   style.self_shadows = options.shadows;
+  frep::RunControl run;
+  run.threads = options.threads;
+  run.cancel = [] { return InterruptGuard::interrupted(); };
   frep::render::Image picture(width, height, { background[0], background[1], background[2], 1.0F });
   const frep::raycast::Result r = frep::raycast::render(picture,
     camera,
@@ -175,7 +177,7 @@ int run_render(const RenderOptions& options)
     framed.floor ? &*framed.floor : nullptr,
     style,
     nullptr,
-    [] { return InterruptGuard::interrupted(); });
+    run);
   InterruptGuard::throw_if_interrupted();
   if (!r.ok())
   {

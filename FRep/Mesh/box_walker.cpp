@@ -143,7 +143,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
   }
   const auto start = Clock::now();
   const GridFrame frame(grid, dimension);
-  const std::shared_ptr<ThreadPool> pool = pool_for(options);
+  const std::shared_ptr<ThreadPool> pool = options.thread_pool();
   // Blocks of 4 leaves per axis: enough blocks to balance the threads, few enough that joining
   // their pieces is cheap.
   const std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
@@ -158,7 +158,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
   std::vector<std::unique_ptr<BoxWalker>> walkers(static_cast<std::size_t>(pool->size()));
   std::vector<Piece> pieces(blocks.size());
   std::size_t block_count = 0;
-  const bool finished = for_each_block(*pool, blocks, options.progress,
+  const bool finished = for_each_block(*pool, blocks, options,
     [&](std::size_t index, const CellBox& block, int slot)
     {
       auto& walker = walkers[static_cast<std::size_t>(slot)];

@@ -269,8 +269,7 @@ std::vector<CellBox> blocks_of(const CellBox& range, int dimension, std::int64_t
   return blocks;
 }
 
-bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
-  const std::function<bool(double)>& progress,
+bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks, const RunControl& run,
   const std::function<void(std::size_t index, const CellBox& block, int slot)>& body,
   std::size_t& block_count)
 {
@@ -284,20 +283,21 @@ bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
   pool.parallel_for(blocks.size(),
     [&](std::size_t index, int slot)
     {
-      if (cancelled.load(std::memory_order_relaxed))
+      if (cancelled.load(std::memory_order_relaxed) || run.cancel_requested())
       {
+        cancelled = true;
         return;
       }
       body(index, blocks[index], slot);
       const std::size_t finished = done.fetch_add(1) + 1;
-      if (progress && (finished % report_every == 0 || finished == blocks.size()))
+      if (run.progress && (finished % report_every == 0 || finished == blocks.size()))
       {
         std::lock_guard lock(progress_mutex);
         // Threads can reach the lock out of order: report only forward steps.
         if (finished > reported)
         {
           reported = finished;
-          if (!progress(double(finished) / double(blocks.size())))
+          if (!run.progress(double(finished) / double(blocks.size())))
           {
             cancelled = true;
           }
@@ -307,9 +307,5 @@ bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
   return !cancelled.load();
 }
 
-std::shared_ptr<ThreadPool> pool_for(const ExtractOptions& options)
-{
-  return options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
-}
 
 } // namespace frep::mesh::detail

@@ -121,10 +121,10 @@ std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
   const CellBox& range, std::int64_t block_cells, Surface& surface,
   std::vector<std::uint64_t>& keys);
 
-/// Runs body(index, blocks[index], slot) for every block, spread over the pool, and reports progress (blocks done / blocks) through `progress`, never concurrently.
-/// Returns false when progress asked to cancel (the remaining blocks are skipped).
-bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks,
-  const std::function<bool(double)>& progress,
+/// Runs body(index, blocks[index], slot) for every block, spread over the pool, and reports
+/// progress (blocks done / blocks) through run.progress, never concurrently. Returns false when
+/// progress or run.cancel asked to stop (the remaining blocks are skipped).
+bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks, const RunControl& run,
   const std::function<void(std::size_t index, const CellBox& block, int slot)>& body,
   std::size_t& block_count);
 
@@ -141,8 +141,6 @@ void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
   const std::shared_ptr<ThreadPool>& pool,
   Surface& surface, ExtractStatistics& statistics);
 
-/// The pool of the options, or a new one with options.threads participants.
-std::shared_ptr<ThreadPool> pool_for(const ExtractOptions& options);
 
 /// How an interval enclosure classifies a box.
 enum class BoxSign

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "Compiler/tape.h"
+#include "Eval/run_control.h"
 #include "Sample/grid.h"
 
 #include <array>
@@ -40,7 +41,7 @@ struct Grid
   std::array<std::int64_t, 3> samples{ 64, 64, 64 };
 };
 
-struct ExtractOptions
+struct ExtractOptions : RunControl
 {
   double iso = 0.0; ///< the surface is F = iso; F >= iso is inside
   /// Close the solid where it meets the box (3-D only). Off: the mesh is open there.
@@ -67,12 +68,9 @@ struct ExtractOptions
   /// stay on the whole grid's box. cells_end 0 on an axis = up to the last cell.
   std::array<std::int64_t, 3> cells_begin{ 0, 0, 0 };
   std::array<std::int64_t, 3> cells_end{ 0, 0, 0 };
-  /// Worker threads (0 = all cores) when no pool is given.
-  int threads = 0;
-  std::shared_ptr<ThreadPool> pool;
-  /// Called now and then with the fraction done in [0, 1]; return false to cancel. May be
-  /// called from any worker thread, never concurrently.
-  std::function<bool(double fraction)> progress;
+  // RunControl: threads or pool; progress is called now and then with the fraction done in
+  // [0, 1] from any worker thread, never concurrently (false cancels); cancel is polled before
+  // every block of cells.
 };
 
 /// A triangle mesh (3-D) or a set of line segments (2-D contour, z = 0).

@@ -345,8 +345,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
       : std::min(available, static_cast<std::size_t>(options.attribute_count));
     const FailurePolicy policy = options.failures;
 
-    std::shared_ptr<ThreadPool> pool =
-      options.pool ? options.pool : std::make_shared<ThreadPool>(options.threads);
+    std::shared_ptr<ThreadPool> pool = options.thread_pool();
     BatchOptions batch_options;
     batch_options.pool = pool;
     batch_options.jit = options.jit;
@@ -366,7 +365,7 @@ SampleResult sample_grid(std::shared_ptr<const Tape> tape, const GridSpec& grid,
     const auto stop = [&](double fraction)
     {
       const bool go_on = !options.progress || options.progress(fraction);
-      return !go_on || (options.cancel && options.cancel->load(std::memory_order_relaxed));
+      return !go_on || options.cancel_requested();
     };
     PartCursor cursor(grid);
     if (stop(0.0))

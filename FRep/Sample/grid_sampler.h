@@ -17,9 +17,9 @@
 #pragma once
 
 #include "Compiler/tape.h"
+#include "Eval/run_control.h"
 #include "Sample/grid.h"
 
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -60,7 +60,7 @@ enum class FailurePolicy
   Previous ///< hfp's: the previous sample's values (in the part's order; 0 for the first)
 };
 
-struct SampleOptions
+struct SampleOptions : RunControl
 {
   /// s[1..attribute_count] per sample (the tape's outputs after F, computed from s[] = 0);
   /// -1 = every attribute the tape has, 0 = none.
@@ -86,14 +86,9 @@ struct SampleOptions
   /// Grids (the whole grid, not the part) with more samples are refused before anything is
   /// allocated or evaluated.
   double max_samples = max_grid_samples;
-  /// Worker threads (0 = all cores) when no pool is given.
-  int threads = 0;
-  std::shared_ptr<ThreadPool> pool;
-  /// Called on the calling thread with the fraction done, 0 before the first block and then
-  /// after every block, rising to exactly 1; return false to cancel (before the next block).
-  std::function<bool(double fraction)> progress;
-  /// Set (from any thread) to cancel; checked before every block.
-  const std::atomic<bool>* cancel = nullptr;
+  // RunControl: threads or pool; progress is called on the calling thread with the fraction
+  // done, 0 before the first block and then after every block, rising to exactly 1 (false
+  // cancels before the next block); cancel is polled before every block.
 };
 
 /// One block of consecutive samples of the part, after the failure policy. Valid during the

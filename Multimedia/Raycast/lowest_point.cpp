@@ -37,10 +37,11 @@ std::optional<LowestHit> look_up(const Shape& shape,
   camera.near_distance = 1e-6 * half;
   Style style;
   style.render.supersample = 1;
-  style.render.threads = threads;
   render::Image picture(pixels, pixels);
   std::vector<float> depth;
-  if (!render(picture, camera, shape, nullptr, style, &depth).ok())
+  RunControl run;
+  run.threads = threads;
+  if (!render(picture, camera, shape, nullptr, style, &depth, run).ok())
   {
     return std::nullopt;
   }
@@ -169,10 +170,11 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
   solid.bounds = bounds;
   Style style;
   style.render.supersample = 1;
-  style.render.threads = threads;
   render::Image picture(pixels, pixels);
   std::vector<float> depth;
-  if (!render(picture, camera, solid, nullptr, style, &depth).ok())
+  RunControl run;
+  run.threads = threads;
+  if (!render(picture, camera, solid, nullptr, style, &depth, run).ok())
   {
     return result;
   }

@@ -310,8 +310,7 @@ class Frame
 public:
   Frame(const Context& c, const render::Image& target, const detail::ViewRays& pixels,
     const detail::ViewRays& samples, const std::array<Interval, 3>& clip,
-    const detail::TraceOptions& options, ThreadPool& pool, int ss,
-    const std::function<bool()>& cancel, const std::function<void(double)>& progress)
+    const detail::TraceOptions& options, ThreadPool& pool, int ss, const RunControl& run)
     : c_(c)
     , target_(target)
     , pixels_(pixels)
@@ -320,8 +319,7 @@ public:
     , options_(options)
     , pool_(pool)
     , ss_(ss)
-    , cancel_(cancel)
-    , progress_(progress)
+    , run_(run)
     , tiles_x_((target.width + kTile - 1) / kTile)
     , tiles_y_((target.height + kTile - 1) / kTile)
     , workers_(static_cast<std::size_t>(pool.size()))
@@ -417,7 +415,7 @@ private:
 
   bool stop()
   {
-    if (cancelled_.load(std::memory_order_relaxed) || (cancel_ && cancel_()))
+    if (cancelled_.load(std::memory_order_relaxed) || run_.cancel_requested())
     {
       cancelled_ = true;
     }
@@ -429,13 +427,16 @@ private:
   void report(double from, double span, std::size_t total)
   {
     const std::size_t done = finished_.fetch_add(1, std::memory_order_relaxed) + 1;
-    if (progress_ && std::this_thread::get_id() == caller_ && total > 0)
+    if (run_.progress && std::this_thread::get_id() == caller_ && total > 0)
     {
       const double fraction = from + span * static_cast<double>(done) / static_cast<double>(total);
       if (fraction >= reported_ + 0.01) // at most about 100 calls
       {
         reported_ = fraction;
-        progress_(fraction);
+        if (!run_.progress(fraction))
+        {
+          cancelled_ = true;
+        }
       }
     }
   }
@@ -516,8 +517,7 @@ private:
   const detail::TraceOptions& options_;
   ThreadPool& pool_;
   const int ss_;
-  const std::function<bool()>& cancel_;
-  const std::function<void(double)>& progress_;
+  const RunControl& run_;
   const int tiles_x_, tiles_y_;
   std::vector<std::unique_ptr<Worker>> workers_;
   std::atomic<bool> cancelled_{ false };
@@ -569,8 +569,7 @@ Result render(render::Image& target,
   const Floor* floor,
   const Style& style,
   std::vector<float>* depth,
-  const std::function<bool()>& cancel,
-  const std::function<void(double)>& progress)
+  const RunControl& run)
 {
   const auto start = std::chrono::steady_clock::now();
   Result result;
@@ -599,7 +598,8 @@ Result render(render::Image& target,
   {
     c.floor_index.emplace(*floor);
   }
-  ThreadPool pool(style.render.threads);
+  const std::shared_ptr<ThreadPool> shared_pool = run.thread_pool();
+  ThreadPool& pool = *shared_pool;
   // Rays clip to the solid's bounds in the box (solid_bounds: to 1/256 of the box).
   const mesh::SolidBounds bounds =
     shape.bounds ? *shape.bounds : solid_bounds(shape.tape, shape.box);
@@ -621,7 +621,7 @@ Result render(render::Image& target,
 
   detail::TraceOptions options;
   options.from = pixels.near;
-  Frame frame(c, target, pixels, samples, clip, options, pool, ss, cancel, progress);
+  Frame frame(c, target, pixels, samples, clip, options, pool, ss, run);
   frame.trace_pixels();
   const auto edge_start = std::chrono::steady_clock::now();
   if (ss > 1 && !frame.cancelled())
@@ -641,9 +641,9 @@ Result render(render::Image& target,
   {
     *depth = std::move(frame.depth());
   }
-  if (progress && frame.reported() < 1.0)
+  if (run.progress && frame.reported() < 1.0)
   {
-    progress(1.0);
+    run.progress(1.0);
   }
   result.statistics.seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

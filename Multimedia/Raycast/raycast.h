@@ -35,6 +35,7 @@
 
 #include "Compiler/tape.h"
 #include "Eval/interval.h"
+#include "Eval/run_control.h"
 #include "Mesh/solid_bounds.h"
 
 #include <array>
@@ -116,7 +117,7 @@ Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi);
 /// bounds, then one as large over the 4 x 4 pixels around the lowest hit. Its error is about
 /// the slope there times 1 / (8 pixels) of the solid's width (none on a flat or a round
 /// bottom's lowest ray); a part thinner than a ray's spacing can be missed, as in any picture.
-/// Empty when no ray meets the solid. `threads` as Style's (0 = all cores).
+/// Empty when no ray meets the solid. `threads`: 0 = all cores.
 std::optional<double> lowest_z(const Shape& shape, int pixels = 128, int threads = 1);
 
 /// What a camera looking along `view.forward` must see to see the whole of `shape`'s solid: the
@@ -137,8 +138,9 @@ Silhouette silhouette(const Shape& shape,
 
 struct Style
 {
-  /// The mesh renderer's lights, ambient, specular, shininess, supersample (per axis, 1..4)
-  /// and threads (0 = all cores), so that ray-cast and meshed pictures match.
+  /// The mesh renderer's lights, ambient, specular, shininess and supersample (per axis, 1..4),
+  /// so that ray-cast and meshed pictures match. Its `threads` is the mesh renderer's: the ray
+  /// caster's threads come from render()'s RunControl.
   render::RenderStyle render;
   /// The shape casts shadows on itself (one more ray per lit sample towards the key light).
   bool self_shadows = false;
@@ -169,18 +171,18 @@ struct Result
 /// Draws `shape` (and the floor, if given) over `target` (its size is the picture's size):
 /// pixels neither covers keep the target's colour, edges blend with it. `depth`, when given,
 /// receives per output pixel the world distance from the eye along the view direction of the
-/// nearest sample drawn (infinity where nothing was). `cancel`, when given, is polled per tile
-/// (return true to stop: the picture is then incomplete and the result says "cancelled").
-/// `progress`, when given, is called on the calling thread only (never from the pool's other
-/// threads, so a VTK filter may pass UpdateProgress), with rising fractions in [0, 1] as tiles
-/// finish (steps of at least 0.01), and with 1 when the picture is complete.
+/// nearest sample drawn (infinity where nothing was). `run` (Eval/run_control.h): the threads
+/// or pool to trace on (default: all cores); `cancel` is polled per tile from any thread;
+/// `progress` is called on the calling thread only (never from the pool's other threads, so a
+/// VTK filter may pass UpdateProgress), with rising fractions in [0, 1] as tiles finish (steps
+/// of at least 0.01), and with 1 when the picture is complete. Either stops the picture (it is
+/// then incomplete and the result says "cancelled").
 Result render(render::Image& target,
   const render::Camera& camera,
   const Shape& shape,
   const Floor* floor = nullptr,
   const Style& style = {},
   std::vector<float>* depth = nullptr,
-  const std::function<bool()>& cancel = {},
-  const std::function<void(double)>& progress = {});
+  const RunControl& run = {});
 
 } // namespace frep::raycast

@@ -141,7 +141,6 @@ RaycastPicture raycast_sample(const Model& model,
   }
 
   raycast::Style style;
-  style.render.threads = options.threads;
   // 3 x 3 rays at the edges of small pictures (FRepStudio's cells), 2 x 2 from 200 pixels up:
   // a 300-pixel cell of the demo's spreadsheet costs 1.9 s instead of 3.0 s at 3 x 3.
   style.render.supersample = std::max(width, height) <= 200 ? 3 : 2;
@@ -152,7 +151,7 @@ RaycastPicture raycast_sample(const Model& model,
   style.render.ambient *= sample.light_intensity;
   style.self_shadows = options.self_shadows;
   const raycast::Result r =
-    raycast::render(picture.image, camera, shape, options.floor, style, nullptr, options.cancel);
+    raycast::render(picture.image, camera, shape, options.floor, style, nullptr, options);
   picture.statistics = r.statistics;
   picture.error = r.error;
   return picture;

@@ -27,10 +27,11 @@ bool raycast_supported(const Plan& plan, std::string* why = nullptr);
 /// transform) as the ray caster's row-major 3 x 4 matrix. Requires raycast_supported(plan).
 std::array<double, 12> raycast_world_map(const Plan& plan, const Sample& sample);
 
-struct RaycastOptions
+/// RunControl: threads (here 1 by default: the mapping draws many pictures side by side) or a
+/// pool, cancel polled per tile (true stops), progress on the calling thread.
+struct RaycastOptions : RunControl
 {
-  int threads = 1;                ///< 0 = all cores
-  std::function<bool()> cancel;   ///< polled per tile; true stops
+  RaycastOptions() { threads = 1; }
   const raycast::Floor* floor = nullptr;
   bool self_shadows = false;
 };

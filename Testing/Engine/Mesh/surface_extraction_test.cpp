@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -475,6 +476,22 @@ TEST(SurfaceExtraction, ProgressIsReportedAndCancels)
   const ExtractResult cancelled = extract_surface(tape, cube_grid(6, 100), options);
   EXPECT_TRUE(cancelled.cancelled);
   EXPECT_EQ(cancelled.surface.cell_count(), 0u);
+}
+
+// RunControl::cancel stops the mesher between blocks, polled from its worker threads: a request
+// after the first blocks leaves most of them undone and no mesh.
+TEST(SurfaceExtraction, CancelStopsBetweenBlocks)
+{
+  const auto tape = compile(sphere_model);
+  std::atomic<int> polls{ 0 };
+  ExtractOptions options;
+  options.threads = 2;
+  options.cancel = [&polls] { return ++polls > 3; };
+  const ExtractResult r = extract_surface(tape, cube_grid(6, 160), options);
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.surface.cell_count(), 0u);
+  EXPECT_LT(polls.load(), 40) << "the remaining blocks are skipped without polling each";
 }
 
 TEST(SurfaceExtraction, UsesEveryThreadOfThePool)

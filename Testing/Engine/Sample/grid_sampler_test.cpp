@@ -510,7 +510,7 @@ TEST(GridSampler, CancelStopsEarly)
   const GridSpec grid = cube(3, -1, 1, 100); // 10^6 samples: 16 blocks
   std::atomic<bool> cancel{ false };
   SampleOptions options;
-  options.cancel = &cancel;
+  options.cancel = [&cancel] { return cancel.load(); };
   std::size_t blocks = 0;
   SampleResult r = sample_grid(tape, grid, options,
     [&](const SampleBlock&)

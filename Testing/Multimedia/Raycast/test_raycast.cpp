@@ -25,6 +25,7 @@ namespace
 {
 
 using frep::Interval;
+using frep::RunControl;
 namespace rc = frep::raycast;
 namespace render = frep::render;
 
@@ -195,18 +196,13 @@ TEST(Raycast, SameImageForOneAndTwoThreads)
   floor.columns = floor.rows = 6;
   floor.path = { -2.0, -2.0, 2.0, 1.0, 2.0, 2.0 };
   render::Image one(160, 120), two(160, 120);
-  const rc::Result r1 = rc::render(one, camera, shape, &floor, [] {
-    rc::Style s;
-    s.render.threads = 1;
-    s.self_shadows = true;
-    return s;
-  }());
-  const rc::Result r2 = rc::render(two, camera, shape, &floor, [] {
-    rc::Style s;
-    s.render.threads = 2;
-    s.self_shadows = true;
-    return s;
-  }());
+  rc::Style style;
+  style.self_shadows = true;
+  RunControl run;
+  run.threads = 1;
+  const rc::Result r1 = rc::render(one, camera, shape, &floor, style, nullptr, run);
+  run.threads = 2;
+  const rc::Result r2 = rc::render(two, camera, shape, &floor, style, nullptr, run);
   ASSERT_TRUE(r1.ok() && r2.ok()) << r1.error << r2.error;
   EXPECT_EQ(one.rgba, two.rgba);
   EXPECT_GT(r1.statistics.shadow_rays, 0u);
@@ -234,25 +230,46 @@ TEST(Raycast, BadInputIsRefused)
 TEST(Raycast, CancelStopsTheWork)
 {
   render::Image image(64, 64);
-  const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr,
-    lambert_style(), nullptr, [] { return true; });
+  RunControl run;
+  run.cancel = [] { return true; };
+  const rc::Result r =
+    rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style(), nullptr, run);
   EXPECT_EQ(r.error, "cancelled");
+}
+
+// RunControl's progress returning false stops the picture too (as it stops the sampler and the
+// mesher), after the first report.
+TEST(Raycast, ProgressReturningFalseStopsTheWork)
+{
+  render::Image image(160, 160);
+  RunControl run;
+  run.threads = 1;
+  int reports = 0;
+  run.progress = [&reports](double) { return ++reports < 2; };
+  const rc::Result r =
+    rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style(), nullptr, run);
+  EXPECT_EQ(r.error, "cancelled");
+  EXPECT_EQ(reports, 2);
 }
 
 TEST(Raycast, ProgressRisesToOneOnTheCallingThread)
 {
   render::Image image(160, 160);
   rc::Style style = lambert_style();
-  style.render.threads = 2;
   style.render.supersample = 2;
   const std::thread::id caller = std::this_thread::get_id();
   std::vector<double> values;
   bool elsewhere = false;
-  const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, style,
-    nullptr, {}, [&](double f) {
-      elsewhere = elsewhere || std::this_thread::get_id() != caller;
-      values.push_back(f);
-    });
+  RunControl run;
+  run.threads = 2;
+  run.progress = [&](double f)
+  {
+    elsewhere = elsewhere || std::this_thread::get_id() != caller;
+    values.push_back(f);
+    return true;
+  };
+  const rc::Result r =
+    rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, style, nullptr, run);
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_FALSE(elsewhere);
   ASSERT_GE(values.size(), 3u); // 100 tiles: the caller finishes some of them

@@ -8,7 +8,7 @@
 // (the first compile of a LazyKernel), which is what the throttled callers pay.
 #include "benchmark_cli.h"
 
-#include "Eval/jit_kernel.h"
+#include "Eval/detail/jit_kernel.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include "vtkMultimediaMapping.h"
 
-#include "Media/durable_file.h"
+#include "Durable/atomic_output.h"
 #include "Plan/mapping_json.h"
 
 #include "vtkObjectFactory.h"
@@ -53,27 +53,20 @@ std::string vtkMultimediaMapping::ToJSON() const
 
 bool vtkMultimediaMapping::SaveFile(const std::string& path) const
 {
-  const std::string temporary = path + ".partial";
+  // As every writer of the project: the one temporary beside the file, the data on disk before
+  // the file gets its name, the name on disk before we report success (FRepKit::Durable).
+  try
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << this->ToJSON();
-    out.close();
-    if (!out)
-    {
-      std::remove(temporary.c_str());
-      vtkErrorMacro(<< path << ": cannot write the mapping file");
-      return false;
-    }
+    frep::durable::AtomicOutput out(path);
+    out.stream() << this->ToJSON();
+    out.commit();
+    return true;
   }
-  // As every writer of the project: the data on disk before the file gets its name, the name on
-  // disk before we report success (frep::media::durable_rename).
-  if (const std::string problem = frep::media::durable_rename(temporary, path); !problem.empty())
+  catch (const frep::durable::OutputError& e)
   {
-    std::remove(temporary.c_str());
-    vtkErrorMacro(<< path << ": cannot write the mapping file (" << problem << ")");
+    vtkErrorMacro(<< "cannot write the mapping file: " << e.what());
     return false;
   }
-  return true;
 }
 
 void vtkMultimediaMapping::SetSpec(const frep::mapping::Spec& spec)

@@ -1,8 +1,7 @@
 #include "DurableSave.h"
 
-#include "Media/durable_file.h"
+#include "Durable/pending_file.h"
 
-#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QImageWriter>
@@ -14,29 +13,16 @@ namespace frepstudio
 namespace
 {
 
-// The temporary lies in the target's directory (the rename must not cross file systems) and is
-// named as frepkit's (NAME.tmp-PID).
-QString temporaryFor(const QString& path)
-{
-  return path + QStringLiteral(".tmp-%1").arg(QCoreApplication::applicationPid());
-}
-
+// The one temporary of the project (frep::durable::PendingFile: TARGET.tmp-PID-N beside the
+// target, removed unless put in place), written by `write`, then put in place durably.
 QString putInPlace(const QString& path, const std::function<QString(const QString&)>& write)
 {
-  const QString temporary = temporaryFor(path);
-  if (QString problem = write(temporary); !problem.isEmpty())
-  {
-    QFile::remove(temporary);
+  frep::durable::PendingFile pending(QFile::encodeName(path).toStdString());
+  if (!pending.error().empty())
+    return QString::fromStdString(pending.error());
+  if (QString problem = write(QFile::decodeName(pending.temporary().c_str())); !problem.isEmpty())
     return problem;
-  }
-  const std::string problem = frep::media::durable_rename(
-    QFile::encodeName(temporary).toStdString(), QFile::encodeName(path).toStdString());
-  if (!problem.empty())
-  {
-    QFile::remove(temporary);
-    return QString::fromStdString(problem);
-  }
-  return {};
+  return QString::fromStdString(pending.commit());
 }
 
 } // namespace

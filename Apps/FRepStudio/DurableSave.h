@@ -1,7 +1,8 @@
 // FRepStudio's saves (the model, the mapping, screenshots, the export's inputs) put a file in
-// place as frepkit does: written under a temporary name beside the target, then
-// frep::media::durable_rename (fsync of the file, rename, fsync of the directory). QSaveFile
-// renames but does not sync the directory, so a crash right after "Saved" could lose the name.
+// place as frepkit does: written to the project's one temporary beside the target
+// (frep::durable::PendingFile), then put in place by a durable rename (fsync of the file,
+// rename, fsync of the directory). QSaveFile renames but does not sync the directory, so a
+// crash right after "Saved" could lose the name.
 #pragma once
 
 #include <QByteArray>

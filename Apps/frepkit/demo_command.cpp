@@ -1,6 +1,6 @@
 #include "demo_command.h"
 
-#include "atomic_output.h"
+#include "Durable/atomic_output.h"
 #include "map_command.h"
 #include "mesh_command.h"
 #include "user_error.h"
@@ -161,7 +161,7 @@ int run_demo(const DemoOptions& options)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   manifest["seconds"]["total"] = total;
   {
-    AtomicOutput file(manifest_path.string());
+    frep::durable::AtomicOutput file(manifest_path.string());
     file.stream() << manifest.dump(2) << "\n";
     file.commit();
   }

@@ -3,8 +3,8 @@
 #include "Compiler/model.h"
 #include "Eval/batch_evaluator.h"
 #include "Semantics/interpreter.h"
-#include "atomic_output.h"
-#include "interrupt_guard.h"
+#include "Durable/atomic_output.h"
+#include "Durable/interrupt_guard.h"
 #include "model_loading.h"
 #include "number_format.h"
 #include "points_reader.h"
@@ -249,11 +249,12 @@ int run_eval(const EvalOptions& options)
   }
   PointsReader reader(*in, options.points == "-" ? "<stdin>" : options.points, object.x_dim);
   EvalRun run(options, loaded, object_index);
-  AtomicOutput output(options.output);
+  frep::durable::AtomicOutput output(options.output);
   std::vector<std::vector<double>> columns;
   while (const std::size_t count = reader.read(kChunkPoints, columns))
   {
-    InterruptGuard::throw_if_interrupted(); // a long points file stops between chunks
+    // A long points file stops between chunks.
+    frep::durable::InterruptGuard::throw_if_interrupted();
     run.evaluate_chunk(columns, count, output.stream());
   }
   output.commit();

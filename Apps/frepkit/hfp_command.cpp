@@ -2,10 +2,10 @@
 
 #include "Compiler/attribute_rgb.h"
 #include "Eval/point_evaluator.h"
-#include "atomic_output.h"
+#include "Durable/atomic_output.h"
 #include "coordinate_mapping.h"
 #include "hfp_arguments.h"
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
 #include "progress_bar.h"
@@ -106,7 +106,7 @@ int run_cli_layers(const HfpArguments& a,
   const double zmin = a.box[2];
   const double zmax = a.box[5];
   const double dz = a.slicing_step[2];
-  AtomicOutput output(a.cli_name);
+  frep::durable::AtomicOutput output(a.cli_name);
   write_cli_header(output.stream());
 
   frep::mesh::Grid grid;
@@ -127,7 +127,7 @@ int run_cli_layers(const HfpArguments& a,
   run.contour = true;
   run.show_progress = false;
 
-  InterruptGuard interrupt;
+  frep::durable::InterruptGuard interrupt;
   ProgressBar bar("slicing", true);
   const std::size_t layer_count =
     zmin < zmax ? static_cast<std::size_t>(std::ceil((zmax - zmin) / dz)) : 0;
@@ -160,9 +160,9 @@ int run_cli_layers(const HfpArguments& a,
     }
     bar.update(
       layer_count > 0 ? static_cast<double>(i + 1) / static_cast<double>(layer_count) : 1.0);
-    if (InterruptGuard::interrupted())
+    if (frep::durable::InterruptGuard::interrupted())
     {
-      throw Interrupted();
+      throw frep::durable::Interrupted();
     }
   }
   bar.finish();
@@ -287,10 +287,10 @@ int run_hfp(const std::vector<std::string>& args)
 
   const std::vector<OutputFile> files = hfp_output_files(a);
   // Opened before the work: an unwritable path fails at once and nothing is left behind.
-  std::vector<std::unique_ptr<AtomicOutput>> outputs;
+  std::vector<std::unique_ptr<frep::durable::AtomicOutput>> outputs;
   for (const OutputFile& file : files)
   {
-    outputs.push_back(std::make_unique<AtomicOutput>(file.path));
+    outputs.push_back(std::make_unique<frep::durable::AtomicOutput>(file.path));
   }
 
   frep::mesh::Grid grid;

@@ -4,7 +4,7 @@
 #include "eval_command.h"
 #include "hfp_command.h"
 #include "demo_command.h"
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "map_command.h"
 #include "mesh_command.h"
 #include "slice_command.h"
@@ -36,32 +36,42 @@ std::string address_space_limit()
   return " (address-space limit " + std::to_string(limit.rlim_cur >> 20) + " MB)";
 }
 
-/// Runs a command under one InterruptGuard, so that a signal at any moment of any subcommand,
-/// its writes included, ends in a clean exit; a UserError is one message and exit code 1, an
-/// interruption exit code 128 + the signal, anything else exit code 2. A command that finished
-/// before it noticed a signal has written everything: its exit code stands.
+/// A user error or an output that could not be put in place: one message, exit code 1; or, when
+/// a signal caused it (ffmpeg stopped by the same Ctrl-C, a read cut short by EINTR, a commit
+/// refused after the signal), the interruption it is: 128 + the signal.
+int report_failure(std::string message)
+{
+  if (!message.empty() && message.back() == '\n')
+  {
+    message.pop_back();
+  }
+  std::cerr << "frepkit: " << message << '\n';
+  if (frep::durable::InterruptGuard::interrupted())
+  {
+    return 128 + frep::durable::InterruptGuard::signal_number();
+  }
+  return 1;
+}
+
+/// Runs a command under one InterruptGuard (Support/Durable), so that a signal at any moment of
+/// any subcommand, its writes included, ends in a clean exit; a UserError or OutputError is one
+/// message and exit code 1, an interruption exit code 128 + the signal, anything else exit
+/// code 2. A command that finished before it noticed a signal has written everything: its exit
+/// code stands.
 int guarded(const std::function<int()>& command)
 {
-  frepkit::InterruptGuard interrupt;
+  frep::durable::InterruptGuard interrupt;
   try
   {
     return command();
   }
   catch (const frepkit::UserError& e)
   {
-    std::string message = e.what();
-    if (!message.empty() && message.back() == '\n')
-    {
-      message.pop_back();
-    }
-    std::cerr << "frepkit: " << message << '\n';
-    // Also a failure that the signal caused (ffmpeg stopped by the same Ctrl-C, a read cut
-    // short by EINTR) is reported as the interruption it is.
-    if (frepkit::InterruptGuard::interrupted())
-    {
-      return 128 + frepkit::InterruptGuard::signal_number();
-    }
-    return 1;
+    return report_failure(e.what());
+  }
+  catch (const frep::durable::OutputError& e)
+  {
+    return report_failure(e.what());
   }
   catch (const std::bad_alloc&)
   {

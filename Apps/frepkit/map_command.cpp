@@ -1,6 +1,6 @@
 #include "map_command.h"
 
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "map_phases.h"
 
 #include <CLI/CLI.hpp>
@@ -90,12 +90,12 @@ int run_map(const MapOptions& options)
   // signals: none is started after one.
   if (products.audio)
   {
-    InterruptGuard::throw_if_interrupted();
+    frep::durable::InterruptGuard::throw_if_interrupted();
     write_sound(in, wav, record);
   }
   if (products.movie)
   {
-    InterruptGuard::throw_if_interrupted();
+    frep::durable::InterruptGuard::throw_if_interrupted();
     const fs::path movie = out.directory / (out.stem + ".mp4");
     encode_movie(in, workers, frames, products.audio ? &wav : nullptr, movie, record);
   }

@@ -2,7 +2,7 @@
 // the framing.
 #include "map_phases.h"
 
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "model_loading.h"
 #include "user_error.h"
 
@@ -145,7 +145,7 @@ void frame_solids(MapInputs& in, const MapProducts& products, int workers, MapRe
   const auto t0 = Clock::now();
   frep::ThreadPool pool(workers);
   in.framing = mapping::frame_solids(in.spec.render, *in.model, in.parameters, in.plan, &pool);
-  InterruptGuard::throw_if_interrupted();
+  frep::durable::InterruptGuard::throw_if_interrupted();
   const std::size_t samples = 1 + in.plan.cells.size() + in.plan.frames.size();
   record.stages.push_back({ "framing",
     seconds_since(t0),

@@ -51,7 +51,7 @@ double seconds_since(Clock::time_point start);
 /// The whole file as bytes; a UserError "cannot read the <what> <path>" when it cannot be read.
 std::string read_file(const std::string& path, const char* what);
 
-/// Written under a temporary name, renamed when complete (AtomicOutput).
+/// Written under a temporary name, renamed when complete (AtomicOutput, Support/Durable).
 void write_png_file(const fs::path& path, const frep::render::Image& image);
 void write_text_file(const fs::path& path, const std::string& text);
 

@@ -1,8 +1,8 @@
 // frepkit map: what the rendering phases share (workers, progress, file writing).
 #include "map_phases.h"
 
-#include "atomic_output.h"
-#include "interrupt_guard.h"
+#include "Durable/atomic_output.h"
+#include "Durable/interrupt_guard.h"
 #include "section_writers/png_writer.h"
 #include "user_error.h"
 
@@ -23,14 +23,14 @@ double seconds_since(Clock::time_point start)
 
 void write_png_file(const fs::path& path, const frep::render::Image& image)
 {
-  AtomicOutput out(path.string());
+  frep::durable::AtomicOutput out(path.string());
   write_png(out.stream(), image.width, image.height, frep::render::to_rgb8(image));
   out.commit();
 }
 
 void write_text_file(const fs::path& path, const std::string& text)
 {
-  AtomicOutput out(path.string());
+  frep::durable::AtomicOutput out(path.string());
   out.stream() << text;
   out.commit();
 }
@@ -106,12 +106,13 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
 {
   mapping::SectionOptions so;
   so.pool = pools_[static_cast<std::size_t>(worker)];
-  so.progress = [](double) { return !InterruptGuard::interrupted(); };
+  so.progress = [](double) { return !frep::durable::InterruptGuard::interrupted(); };
   mapping::Section section =
     mapping::make_section(*inputs_.model, inputs_.parameters, inputs_.plan, sample, so);
-  if (section.cancelled || InterruptGuard::interrupted())
+  if (section.cancelled || frep::durable::InterruptGuard::interrupted())
   {
-    throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
+    throw frep::durable::Interrupted(
+      "interrupted; the files written so far are kept (run again to resume)");
   }
   if (!section.error.empty())
   {
@@ -138,7 +139,7 @@ MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
   {
     mapping::RaycastOptions ro;
     ro.threads = threads;
-    ro.cancel = [] { return InterruptGuard::interrupted(); };
+    ro.cancel = [] { return frep::durable::InterruptGuard::interrupted(); };
     ro.floor = floor;
     // On the floor scene's board the solid stands on its lowest point.
     const mapping::Sample placed = floor
@@ -147,9 +148,10 @@ MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
       : sample;
     mapping::RaycastPicture r = mapping::raycast_sample(
       *inputs_.model, inputs_.parameters, inputs_.plan, placed, camera, width, height, ro);
-    if (InterruptGuard::interrupted() || r.error == "cancelled")
+    if (frep::durable::InterruptGuard::interrupted() || r.error == "cancelled")
     {
-      throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
+      throw frep::durable::Interrupted(
+      "interrupted; the files written so far are kept (run again to resume)");
     }
     if (!r.ok())
     {
@@ -185,7 +187,7 @@ void MapWorkers::parallel(std::size_t count, const std::function<void(std::size_
     for (;;)
     {
       const std::size_t i = next.fetch_add(1);
-      if (i >= count || failed || InterruptGuard::interrupted())
+      if (i >= count || failed || frep::durable::InterruptGuard::interrupted())
       {
         return;
       }
@@ -218,9 +220,10 @@ void MapWorkers::parallel(std::size_t count, const std::function<void(std::size_
   {
     std::rethrow_exception(error);
   }
-  if (InterruptGuard::interrupted())
+  if (frep::durable::InterruptGuard::interrupted())
   {
-    throw Interrupted("interrupted; the files written so far are kept (run again to resume)");
+    throw frep::durable::Interrupted(
+      "interrupted; the files written so far are kept (run again to resume)");
   }
 }
 

@@ -1,9 +1,9 @@
 #include "render_command.h"
 
-#include "atomic_output.h"
+#include "Durable/atomic_output.h"
 #include "box_option.h"
 #include "coordinate_mapping.h"
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
 #include "number_format.h"
@@ -169,7 +169,7 @@ int run_render(const RenderOptions& options)
   style.self_shadows = options.shadows;
   frep::RunControl run;
   run.threads = options.threads;
-  run.cancel = [] { return InterruptGuard::interrupted(); };
+  run.cancel = [] { return frep::durable::InterruptGuard::interrupted(); };
   frep::render::Image picture(width, height, { background[0], background[1], background[2], 1.0F });
   const frep::raycast::Result r = frep::raycast::render(picture,
     camera,
@@ -178,13 +178,13 @@ int run_render(const RenderOptions& options)
     style,
     nullptr,
     run);
-  InterruptGuard::throw_if_interrupted();
+  frep::durable::InterruptGuard::throw_if_interrupted();
   if (!r.ok())
   {
     throw UserError(options.model + ": " + r.error);
   }
   {
-    AtomicOutput out(options.output);
+    frep::durable::AtomicOutput out(options.output);
     write_png(out.stream(), width, height, frep::render::to_rgb8(picture));
     out.commit();
   }

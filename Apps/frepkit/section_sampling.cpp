@@ -1,7 +1,7 @@
 #include "section_sampling.h"
 
 #include "Sample/grid_sampler.h"
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "progress_bar.h"
 #include "user_error.h"
 
@@ -57,12 +57,12 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
     section.attributes.assign(s_count, std::vector<double>(section.count()));
   }
 
-  InterruptGuard interrupt;
+  frep::durable::InterruptGuard interrupt;
   ProgressBar bar("sampling", show_progress);
   options.progress = [&bar](double fraction)
   {
     bar.update(fraction);
-    return !InterruptGuard::interrupted();
+    return !frep::durable::InterruptGuard::interrupted();
   };
   const frep::SampleResult result = frep::sample_grid(tape, spec, options,
     [&section](const frep::SampleBlock& b)
@@ -75,7 +75,7 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
     });
   if (result.cancelled)
   {
-    throw Interrupted();
+    throw frep::durable::Interrupted();
   }
   if (!result.ok())
   {

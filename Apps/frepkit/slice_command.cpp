@@ -1,7 +1,7 @@
 #include "slice_command.h"
 
 #include "Compiler/attribute_rgb.h"
-#include "atomic_output.h"
+#include "Durable/atomic_output.h"
 #include "box_option.h"
 #include "coordinate_mapping.h"
 #include "mesh_writers/mesh_format.h"
@@ -204,7 +204,7 @@ int run_slice(const SliceOptions& options)
     return write_surface_file(std::move(job));
   }
 
-  AtomicOutput output(options.output);
+  frep::durable::AtomicOutput output(options.output);
   std::string summary;
   std::size_t failed = 0;
   if (kind == SliceKind::Contour)

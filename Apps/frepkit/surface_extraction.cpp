@@ -1,6 +1,6 @@
 #include "surface_extraction.h"
 
-#include "interrupt_guard.h"
+#include "Durable/interrupt_guard.h"
 #include "progress_bar.h"
 #include "user_error.h"
 
@@ -14,12 +14,12 @@ frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
   frep::mesh::ExtractOptions options,
   const ExtractionRun& run)
 {
-  InterruptGuard interrupt;
+  frep::durable::InterruptGuard interrupt;
   ProgressBar bar(run.label, run.show_progress);
   options.progress = [&bar](double fraction)
   {
     bar.update(fraction);
-    return !InterruptGuard::interrupted();
+    return !frep::durable::InterruptGuard::interrupted();
   };
   frep::mesh::ExtractResult result =
     run.contour ? frep::mesh::extract_contour(std::move(tape), grid, options)
@@ -29,9 +29,9 @@ frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
   {
     throw UserError(result.error);
   }
-  if (result.cancelled || InterruptGuard::interrupted())
+  if (result.cancelled || frep::durable::InterruptGuard::interrupted())
   {
-    throw Interrupted();
+    throw frep::durable::Interrupted();
   }
   return result;
 }

@@ -1,7 +1,7 @@
 #include "surface_output.h"
 
 #include "Compiler/attribute_rgb.h"
-#include "atomic_output.h"
+#include "Durable/atomic_output.h"
 #include "number_format.h"
 #include "sampling_grid.h"
 #include "surface_extraction.h"
@@ -16,7 +16,7 @@ namespace frepkit
 int write_surface_file(SurfaceJob job)
 {
   // Opened first: an unwritable output fails before the work, and a failure later removes it.
-  AtomicOutput output(job.output);
+  frep::durable::AtomicOutput output(job.output);
 
   job.extract.normals = job.normals && job.format != MeshFormat::Stl;
   job.extract.attributes = job.colours || (job.attributes && job.format == MeshFormat::Vtp);

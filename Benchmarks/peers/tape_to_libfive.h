@@ -3,9 +3,9 @@
 //
 // Exact counterparts: arithmetic, sqrt, exp, log, sin, cos, tan, asin, acos, atan, atan2, abs,
 // min, max; R-functions as their formulas (Union = a + b + sqrt(a^2 + b^2), Intersect =
-// a + b - sqrt(a^2 + b^2), Semantics/op_semantics.h). By formula (same value up to rounding and
-// except on the edge cases noted): log10, sinh/cosh/tanh through exp, a^n through libfive's
-// integer pow (HyperFun's 0 for |a| < 1e-6 not kept), a^b for a non-constant b as exp(b log a),
+// a + b - sqrt(a^2 + b^2), Semantics/detail/op_semantics.h). By formula (same value up to
+// rounding and except on the edge cases noted): log10, sinh/cosh/tanh through exp, a^n through
+// libfive's integer pow (HyperFun's 0 for |a| < 1e-6 not kept), a^b for a non-constant b as exp(b log a),
 // comparisons and logic through libfive's compare (-1/0/1), Select c ? b : a as a*b + (1-a)*c
 // (NaN where the branch not taken is infinite). Run-time error checks (ErrorIf) are dropped:
 // libfive has no errors, it yields NaN/inf. Anything else (floor, ceil, trunc, frac, fmod, mod,

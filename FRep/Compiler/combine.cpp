@@ -4,11 +4,11 @@
 // union is the union of the operands' slices, each folded as far as its own model allows.
 #include "Compiler/combine.h"
 
-#include "Compiler/emit.h"
-#include "Compiler/expr.h"
-#include "Compiler/model_impl.h"
-#include "Compiler/tape_join.h"
-#include "Library/library_generic.h"
+#include "Compiler/detail/emit.h"
+#include "Compiler/detail/expr.h"
+#include "Compiler/detail/model_impl.h"
+#include "Compiler/detail/tape_join.h"
+#include "Library/detail/library_generic.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,6 +1,6 @@
-#include "Compiler/dag.h"
+#include "Compiler/detail/dag.h"
 
-#include "Compiler/op_eval.h"
+#include "Compiler/detail/op_eval.h"
 
 #include <bit>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "Compiler/emit.h"
+#include "Compiler/detail/emit.h"
 
 #include <algorithm>
 #include <limits>

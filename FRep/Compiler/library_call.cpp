@@ -1,8 +1,8 @@
-#include "Compiler/library_call.h"
+#include "Compiler/detail/library_call.h"
 
-#include "Semantics/error_positions.h"
+#include "Semantics/detail/error_positions.h"
 #include "Semantics/interpreter.h"
-#include "Semantics/runtime_messages.h"
+#include "Semantics/detail/runtime_messages.h"
 #include "Library/library.h"
 
 #include <map>

@@ -7,15 +7,15 @@
 //
 // Dynamic array indices (depending on free coordinates) are lowered to a range guard plus a
 // chain of Selects over the array's elements (reads) or one Select per element (writes).
-#include "Compiler/lower.h"
+#include "Compiler/detail/lower.h"
 
-#include "Compiler/expr.h"
-#include "Compiler/library_call.h"
-#include "Compiler/user_call.h"
-#include "Semantics/error_positions.h"
-#include "Semantics/runtime_messages.h"
+#include "Compiler/detail/expr.h"
+#include "Compiler/detail/library_call.h"
+#include "Compiler/detail/user_call.h"
+#include "Semantics/detail/error_positions.h"
+#include "Semantics/detail/runtime_messages.h"
 #include "Library/library.h"
-#include "Library/library_generic.h"
+#include "Library/detail/library_generic.h"
 
 #include <algorithm>
 #include <climits>

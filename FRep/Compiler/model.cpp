@@ -4,9 +4,9 @@
 // what makes slices small.
 #include "Compiler/model.h"
 
-#include "Compiler/model_impl.h"
-#include "Compiler/object_source.h"
-#include "Semantics/ast_validation.h"
+#include "Compiler/detail/model_impl.h"
+#include "Compiler/detail/object_source.h"
+#include "Semantics/detail/ast_validation.h"
 
 #include <stdexcept>
 

@@ -93,7 +93,7 @@ public:
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
-  struct Impl; ///< internal (Compiler/model_impl.h)
+  struct Impl; ///< internal (Compiler/detail/model_impl.h)
 
 private:
   explicit Model(std::unique_ptr<Impl> impl);

@@ -3,11 +3,11 @@
 // Compiled tapes evaluate every point from a fresh state (the conformance "fresh" mode): a[] as
 // given, s[] = 0, locals unset. hfp's persistence of a[]/s[] between points is reproduced only
 // by the Interpreter.
-#include "Compiler/object_source.h"
+#include "Compiler/detail/object_source.h"
 
-#include "Compiler/emit.h"
-#include "Compiler/library_call.h"
-#include "Compiler/lower.h"
+#include "Compiler/detail/emit.h"
+#include "Compiler/detail/library_call.h"
+#include "Compiler/detail/lower.h"
 
 namespace frep::compiler
 {

@@ -2,8 +2,9 @@
 // the compiler, the simplifier, the freezes and the evaluators need to know about it apart from
 // its value (name, operands, boolean result, bitwise commutativity, whether a box can decide it,
 // whether the batch kernel has a form with a constant operand). Adding an opcode: a row here, its
-// value rule (Compiler/op_eval.h, and the interval rule in Eval/interval_evaluator.cpp), and the
-// evaluators' kernels; `static_assert`s below keep the table in the enum's order and complete.
+// value rule (Compiler/detail/op_eval.h, and the interval rule in Eval/interval_evaluator.cpp),
+// and the evaluators' kernels; `static_assert`s below keep the table in the enum's order and
+// complete.
 #pragma once
 
 #include <array>

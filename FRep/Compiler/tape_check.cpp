@@ -1,4 +1,4 @@
-#include "Compiler/tape_check.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,6 +1,6 @@
-#include "Compiler/tape_join.h"
+#include "Compiler/detail/tape_join.h"
 
-#include "Compiler/tape_check.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <limits>
 #include <stdexcept>

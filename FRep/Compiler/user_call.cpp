@@ -1,4 +1,4 @@
-#include "Compiler/user_call.h"
+#include "Compiler/detail/user_call.h"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 #include "Eval/batch_evaluator.h"
 
-#include "Compiler/tape_check.h"
-#include "Eval/block_runner.h"
-#include "Eval/jit_kernel.h"
+#include "Compiler/detail/tape_check.h"
+#include "Eval/detail/block_runner.h"
+#include "Eval/detail/jit_kernel.h"
 #include "Eval/thread_pool.h"
 
 #include <algorithm>

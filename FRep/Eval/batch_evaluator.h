@@ -36,7 +36,7 @@ struct BatchOptions
   /// The widest kernel build to use: the best the CPU has by default. Every level gives
   /// identical results (no FMA anywhere); lower levels exist for tests and measurements.
   SimdLevel simd = SimdLevel::Best;
-  /// Compile the tape to machine code (the register-resident kernel, Eval/jit_kernel.h) when
+  /// Compile the tape to machine code (the register-resident kernel, Eval/detail/jit_kernel.h) when
   /// the CPU has AVX2, `simd` is at least AVX2 and every instruction has an exact compiled form;
   /// otherwise, or when false, the interpreter runs. Both give identical results.
   bool jit = true;

@@ -1,12 +1,12 @@
 // Compiled with -fno-math-errno (see CMakeLists.txt): sqrt then becomes the vector instruction,
 // which is correctly rounded exactly like the scalar one; nothing else changes value.
-#include "Eval/batch_kernel.h"
+#include "Eval/detail/batch_kernel.h"
 
-#include "Eval/batch_program.h"
-#include "Eval/batch_scalar_lanes.h"
+#include "Eval/detail/batch_program.h"
+#include "Eval/detail/batch_scalar_lanes.h"
 
-#include "Semantics/op_semantics.h"
-#include "Eval/instruction_value.h"
+#include "Semantics/detail/op_semantics.h"
+#include "Eval/detail/instruction_value.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "Eval/batch_program.h"
+#include "Eval/detail/batch_program.h"
 
 #include <limits>
 

@@ -1,6 +1,6 @@
-#include "Eval/batch_scalar_lanes.h"
+#include "Eval/detail/batch_scalar_lanes.h"
 
-#include "Semantics/op_semantics.h"
+#include "Semantics/detail/op_semantics.h"
 
 namespace frep::eval
 {

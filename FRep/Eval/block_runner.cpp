@@ -1,6 +1,6 @@
-#include "Eval/block_runner.h"
+#include "Eval/detail/block_runner.h"
 
-#include "Compiler/tape_check.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "Eval/code_memory.h"
+#include "Eval/detail/code_memory.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,8 +1,8 @@
 #include "Eval/gradient_evaluator.h"
 
-#include "Semantics/op_semantics.h"
-#include "Eval/instruction_value.h"
-#include "Compiler/tape_check.h"
+#include "Semantics/detail/op_semantics.h"
+#include "Eval/detail/instruction_value.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -10,9 +10,9 @@
 //   magnitudes (see r_function()).
 #include "Eval/interval_evaluator.h"
 
-#include "Eval/batch_program.h"
-#include "Semantics/op_semantics.h"
-#include "Compiler/tape_check.h"
+#include "Eval/detail/batch_program.h"
+#include "Semantics/detail/op_semantics.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <algorithm>
 #include <array>

@@ -1,10 +1,10 @@
-#include "Eval/jit_kernel.h"
+#include "Eval/detail/jit_kernel.h"
 
-#include "Compiler/op_eval.h"
-#include "Eval/batch_kernel.h"
-#include "Eval/code_memory.h"
-#include "Eval/x86_emitter.h"
-#include "Semantics/op_semantics.h"
+#include "Compiler/detail/op_eval.h"
+#include "Eval/detail/batch_kernel.h"
+#include "Eval/detail/code_memory.h"
+#include "Eval/detail/x86_emitter.h"
+#include "Semantics/detail/op_semantics.h"
 
 #include <algorithm>
 #include <bit>

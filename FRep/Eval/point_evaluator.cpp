@@ -1,7 +1,7 @@
 #include "Eval/point_evaluator.h"
 
-#include "Eval/instruction_value.h"
-#include "Compiler/tape_check.h"
+#include "Eval/detail/instruction_value.h"
+#include "Compiler/detail/tape_check.h"
 
 #include <algorithm>
 #include <cassert>

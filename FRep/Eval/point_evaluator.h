@@ -1,5 +1,6 @@
 // Evaluates a tape at one point at a time. Exact: the same operations in the same order as the
-// original interpreter (see Semantics/op_semantics.h). One evaluator per thread; tapes are shared.
+// original interpreter (see Semantics/detail/op_semantics.h). One evaluator per thread; tapes are
+// shared.
 #pragma once
 
 #include "Compiler/tape.h"

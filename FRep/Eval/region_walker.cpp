@@ -2,8 +2,8 @@
 // rebound from region to region, and one freeze per depth.
 #include "Eval/region_walker.h"
 
-#include "Eval/block_runner.h"
-#include "Eval/jit_kernel.h"
+#include "Eval/detail/block_runner.h"
+#include "Eval/detail/jit_kernel.h"
 #include "Eval/tape_simplifier.h"
 
 #include <deque>

@@ -1,6 +1,6 @@
 // Encodings from the Intel SDM, volume 2 (VEX: 2.3.5; ModRM/SIB: 2.1.5). Every memory operand
 // uses a 32-bit displacement (mod = 10): one form for all, at a few bytes of code size.
-#include "Eval/x86_emitter.h"
+#include "Eval/detail/x86_emitter.h"
 
 
 namespace frep::eval::x86

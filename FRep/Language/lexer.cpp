@@ -1,6 +1,6 @@
-#include "lexer.h"
+#include "Language/detail/lexer.h"
 
-#include "number_literal.h"
+#include "Language/detail/number_literal.h"
 
 #include <array>
 #include <utility>

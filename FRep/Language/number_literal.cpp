@@ -1,4 +1,4 @@
-#include "number_literal.h"
+#include "Language/detail/number_literal.h"
 
 #include <cmath>
 

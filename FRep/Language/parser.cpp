@@ -5,8 +5,8 @@
 // stops caring after the first one.
 #include "parser.h"
 
-#include "lexer.h"
-#include "number_literal.h"
+#include "Language/detail/lexer.h"
+#include "Language/detail/number_literal.h"
 
 #include <algorithm>
 #include <cmath>

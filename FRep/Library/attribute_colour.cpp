@@ -2,8 +2,8 @@
 // original's while loops do (bit for bit). Where those loops could not terminate in reasonable
 // time (|h| beyond 360 * 2^20, or non-finite h: the original loops forever on -inf/+inf), the
 // hue is reduced with fmod instead.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 

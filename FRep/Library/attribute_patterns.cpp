@@ -2,8 +2,8 @@
 // table (input_map thresholds, input_attr rows of size(output) values). Double-only (table
 // search). Both write 1.1 into input_attr[n_map] (0-based) before the search, as the original
 // does, so the search can read it back.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 

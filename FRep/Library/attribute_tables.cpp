@@ -3,8 +3,8 @@
 // table row is chosen by value). The original's quirks are kept: below the first map entry the
 // lookup tables end up with the LAST row (the first-row copy is overwritten because no interval
 // matched), and hfA_Spline at v = vmax evaluates span nspans-3 at x = 3.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 namespace frep::library
 {

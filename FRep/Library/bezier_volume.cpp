@@ -2,8 +2,8 @@
 // (loop counts come from the values l, m, n). The original fills Bernstein buffers allocated
 // once per process for the first call's (l, m, n); here they are computed per call, which is
 // the same for every call the original handles correctly.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 #include <limits>

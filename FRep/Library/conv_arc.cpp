@@ -4,8 +4,8 @@
 //   angle[i] += EPS on every call, theta[i] clamped to 360 and then set to 180 when larger.
 // It keeps the original's own constants: PI = 3.141592 and atanh(z) = log((1+z) sqrt(1/(1-z^2)))
 // (archyp.h), not the C library's atanh.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 

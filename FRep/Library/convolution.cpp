@@ -2,8 +2,8 @@
 // hfConvCurve, hfConvLineR, hfConvTriangle, hfConvMesh). Double-only: a zero-length segment
 // aborts the program (the original calls error()), and the triangle code reorders vertices by
 // edge length. Expressions keep the original's grouping for bit-identical values.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
 // hfDEllipsoid: signed Euclidean distance to an ellipsoid (> 0 inside), by Newton iteration on
 // the closest-point parameter t, as the original: at most 128 steps, stop when |s(t)| < 1e-6.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 

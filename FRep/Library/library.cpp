@@ -3,8 +3,8 @@
 // symbolic expansion share one implementation); the rest go to their double-only code.
 #include "Library/library.h"
 
-#include "Library/library_double.h"
-#include "Library/library_generic.h"
+#include "Library/detail/library_double.h"
+#include "Library/detail/library_generic.h"
 
 #include <limits>
 

@@ -6,8 +6,8 @@
 // conformance suite only parses these calls). Here the tables are built the same way (gradients
 // ((rand % 512) - 256) / 256 normalised, a random permutation) but from a fixed-seed generator,
 // once, into an immutable table: deterministic and thread-safe, no mutable global state.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <array>
 #include <cmath>

@@ -1,6 +1,6 @@
 // See quartic.h. The helpers keep the original's special cases: fdiv's LARGE_VAL on overflow,
 // the c0 == 0 deflation, the trigonometric branch of the cubic.
-#include "Library/quartic.h"
+#include "Library/detail/quartic.h"
 
 #include <cmath>
 

@@ -3,8 +3,8 @@
 // (radius R, a quartic root near the axes, a circular arc in the strip) in the opposite one.
 // Double-only: many value-dependent branches and a quartic solver. The control flow, including
 // every fall-through that returns 0, follows the original.
-#include "Library/library_double.h"
-#include "Library/quartic.h"
+#include "Library/detail/library_double.h"
+#include "Library/detail/quartic.h"
 
 #include <cmath>
 

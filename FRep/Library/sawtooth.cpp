@@ -1,7 +1,7 @@
 // hfSawtooth: truncated Fourier series of a sawtooth wave. Double-only: the number of terms is
 // the value (int)n.
-#include "Library/array_access.h"
-#include "Library/library_double.h"
+#include "Library/detail/array_access.h"
+#include "Library/detail/library_double.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // The interval-culled walk over a block of cells and the extraction driver shared by surfaces
 // and contours.
-#include "Mesh/extraction_common.h"
+#include "Mesh/detail/extraction_common.h"
 
 #include "Eval/thread_pool.h"
 

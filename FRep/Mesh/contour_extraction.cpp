@@ -1,7 +1,7 @@
 // extract_contour: the 2-D case — interval-culled boxes, batch sampling, marching squares with
 // the same face decision as the 3-D cells, segments with the inside on their left.
-#include "Mesh/cube_topology.h"
-#include "Mesh/extraction_common.h"
+#include "Mesh/detail/cube_topology.h"
+#include "Mesh/detail/extraction_common.h"
 #include "Mesh/surface.h"
 
 #include <algorithm>

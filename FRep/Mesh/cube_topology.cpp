@@ -1,4 +1,4 @@
-#include "Mesh/cube_topology.h"
+#include "Mesh/detail/cube_topology.h"
 
 #include <stdexcept>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "Mesh/extraction_common.h"
+#include "Mesh/detail/extraction_common.h"
 
 #include "Eval/thread_pool.h"
 

@@ -1,6 +1,6 @@
 // What is computed per point once the mesh is joined: roots refined along their grid edge,
 // outward normals from the model's gradient (differences of F), and s[] attributes.
-#include "Mesh/extraction_common.h"
+#include "Mesh/detail/extraction_common.h"
 
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"

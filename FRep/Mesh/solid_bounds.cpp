@@ -123,7 +123,7 @@ SolidBounds solid_bounds_in(const std::shared_ptr<const Tape>& tape,
   }
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = box.size();
-  Walk walk{ RegionWalker(tape), n, depth * static_cast<int>(n), budget };
+  Walk walk{ RegionWalker(tape), n, depth * static_cast<int>(n), budget, false, false, {}, 0 };
   std::vector<Interval> cell(box.begin(), box.end());
   walk.visit(cell, 0, walk.walker.root());
   SolidBounds result;

@@ -56,7 +56,8 @@ struct ExtractOptions : RunControl
   /// is identical either way; off is for tests and measurements. Needs `cull`.
   bool simplify = true;
   /// Run the tapes as compiled machine code once they have enough samples to pay for it
-  /// (BatchOptions::jit, Eval/jit_kernel.h). Identical results; off for tests and measurements.
+  /// (BatchOptions::jit, Eval/detail/jit_kernel.h). Identical results; off for tests and
+  /// measurements.
   bool jit = true;
   /// Cells per axis of the smallest box the culling tests before sampling it.
   int leaf_cells = 8;

@@ -1,7 +1,8 @@
 // extract_surface: interval-culled boxes, batch sampling of the boxes that may hold the
-// surface, marching cubes with per-face decisions (Mesh/cube_topology.h) and caps on the box.
-#include "Mesh/cube_topology.h"
-#include "Mesh/extraction_common.h"
+// surface, marching cubes with per-face decisions (Mesh/detail/cube_topology.h) and caps on the
+// box.
+#include "Mesh/detail/cube_topology.h"
+#include "Mesh/detail/extraction_common.h"
 #include "Mesh/surface.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "Eval/gradient_evaluator.h"
 #include "Eval/tape_simplifier.h"
 #include "Eval/thread_pool.h"
-#include "Sample/tiled_evaluation.h"
+#include "Sample/detail/tiled_evaluation.h"
 
 #include <algorithm>
 #include <cmath>

@@ -73,7 +73,8 @@ struct SampleOptions : RunControl
   /// for tests and measurements.
   bool simplify = true;
   /// Run the tapes as compiled machine code once they have enough samples to pay for it
-  /// (BatchOptions::jit, Eval/jit_kernel.h). Identical results; off for tests and measurements.
+  /// (BatchOptions::jit, Eval/detail/jit_kernel.h). Identical results; off for tests and
+  /// measurements.
   bool jit = true;
   /// Only the side of `iso` matters (sign images, inside/outside counts): a tile whose interval
   /// enclosure lies wholly at or above iso, or wholly below it, with no run-time error or NaN

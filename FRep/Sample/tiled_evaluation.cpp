@@ -1,4 +1,4 @@
-#include "Sample/tiled_evaluation.h"
+#include "Sample/detail/tiled_evaluation.h"
 
 #include "Eval/thread_pool.h"
 

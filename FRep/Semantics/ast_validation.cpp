@@ -1,4 +1,4 @@
-#include "Semantics/ast_validation.h"
+#include "Semantics/detail/ast_validation.h"
 
 #include "Language/function_table.h"
 

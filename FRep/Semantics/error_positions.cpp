@@ -1,4 +1,4 @@
-#include "Semantics/error_positions.h"
+#include "Semantics/detail/error_positions.h"
 
 #include <type_traits>
 #include <variant>

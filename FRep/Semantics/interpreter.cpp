@@ -9,10 +9,10 @@
 // start of an evaluation costs one increment.
 #include "Semantics/interpreter.h"
 
-#include "Semantics/op_semantics.h"
-#include "Semantics/ast_validation.h"
-#include "Semantics/error_positions.h"
-#include "Semantics/runtime_messages.h"
+#include "Semantics/detail/op_semantics.h"
+#include "Semantics/detail/ast_validation.h"
+#include "Semantics/detail/error_positions.h"
+#include "Semantics/detail/runtime_messages.h"
 #include "Library/library.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "Media/movie_encoder.h"
 
-#include "Media/durable_file.h"
+#include "Durable/pending_file.h"
 #include "Media/program_runner.h"
 #include "Media/wav_writer.h"
 
@@ -88,11 +88,6 @@ std::string absolute_path(const std::filesystem::path& path)
   return error ? path.string() : result.string();
 }
 
-std::filesystem::path partial_path(const std::filesystem::path& output)
-{
-  return output.parent_path() / (output.stem().string() + ".partial.mp4");
-}
-
 } // namespace
 
 FramePathResult frame_path(std::string_view pattern, int number)
@@ -161,9 +156,13 @@ MovieResult encode_movie(const MovieInput& input,
     return { where + "the program '" + options.ffmpeg +
              "' was not found on PATH (install ffmpeg, e.g. apt-get install ffmpeg)" };
 
+  // The one temporary of the project, beside the output; removed unless put in place.
+  frep::durable::PendingFile pending(output);
+  if (!pending.error().empty())
+    return { where + pending.error() };
   // Absolute paths: a relative one starting with '-' would read as an option, and one with a
   // ':' early on as a protocol ("a:b.png").
-  const std::filesystem::path partial = absolute_path(partial_path(output));
+  const std::string partial = absolute_path(pending.temporary());
   std::vector<std::string> arguments;
   const auto add = [&arguments](std::initializer_list<std::string> more)
   { arguments.insert(arguments.end(), more); };
@@ -187,7 +186,7 @@ MovieResult encode_movie(const MovieInput& input,
   if (!input.audio.empty())
     add({ "-c:a", "aac", "-b:a", std::to_string(options.audio_bitrate_kbps) + "k" });
   // +faststart: the index at the front, so players start before the whole file has arrived.
-  add({ "-movflags", "+faststart", "-f", "mp4", partial.string() });
+  add({ "-movflags", "+faststart", "-f", "mp4", partial });
 
   std::function<void(std::string_view)> on_line;
   if (options.progress)
@@ -204,17 +203,13 @@ MovieResult encode_movie(const MovieInput& input,
   const ProgramResult run = run_program(*ffmpeg, arguments, on_line);
   if (!run.ok())
   {
-    std::filesystem::remove(partial, filesystem_error);
     const std::string message = trimmed(run.standard_error);
     const std::string failure =
       run.error.empty() ? "ffmpeg exited with status " + std::to_string(run.exit_code) : run.error;
     return { where + failure + (message.empty() ? "" : ": " + message) };
   }
-  if (std::string problem = durable_rename(partial, output); !problem.empty())
-  {
-    std::filesystem::remove(partial, filesystem_error);
+  if (std::string problem = pending.commit(); !problem.empty())
     return { where + problem };
-  }
   return {};
 }
 

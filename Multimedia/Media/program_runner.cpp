@@ -1,6 +1,6 @@
 #include "Media/program_runner.h"
 
-#include "Media/system_message.h"
+#include "Media/detail/system_message.h"
 
 #include <cerrno>
 #include <cstdlib>

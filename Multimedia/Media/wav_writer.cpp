@@ -1,8 +1,7 @@
 #include "Media/wav_writer.h"
 
-#include "Media/system_message.h"
 
-#include "Media/durable_file.h"
+#include "Durable/pending_file.h"
 
 #include <sndfile.h>
 
@@ -19,55 +18,6 @@ namespace frep::media
 {
 namespace
 {
-
-using detail::system_message;
-
-// Owns the temporary file until it is renamed: any early return removes it, so a failure
-// leaves neither a half-written target nor a stray temporary behind.
-class TemporaryFile
-{
-public:
-  explicit TemporaryFile(std::string path_template)
-    : path_(std::move(path_template))
-  {
-    fd_ = ::mkstemp(path_.data());
-    error_ = fd_ < 0 ? errno : 0;
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  ~TemporaryFile()
-  {
-    close();
-    if (error_ == 0 && !renamed_)
-      ::unlink(path_.c_str());
-  }
-
-  int fd() const { return fd_; }
-  int open_error() const { return error_; }
-  const std::string& path() const { return path_; }
-
-  int close()
-  {
-    if (fd_ < 0)
-      return 0;
-    const int status = ::close(fd_);
-    fd_ = -1;
-    return status == 0 ? 0 : errno;
-  }
-  /// durable_rename: the data and the new name on disk. Empty on success.
-  std::string rename_to(const std::string& target)
-  {
-    std::string problem = durable_rename(path_, target);
-    renamed_ = problem.empty();
-    return problem;
-  }
-
-private:
-  std::string path_;
-  int fd_ = -1;
-  int error_ = 0; // errno of mkstemp, 0 if it succeeded
-  bool renamed_ = false;
-};
 
 std::string validate(std::span<const float> samples, int sample_rate, int channels)
 {
@@ -98,15 +48,11 @@ WavWriteResult write_wav(const std::filesystem::path& path,
   if (path.filename().empty())
     return { where + "not a file name" };
 
-  // Beside the target, so that the final rename stays within one file system (atomic).
-  const std::filesystem::path directory =
-    path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-  TemporaryFile temporary((directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string());
-  if (temporary.fd() < 0)
-    return { where + "cannot create a temporary file in " + directory.string() + ": " +
-             system_message(temporary.open_error()) };
-  // mkstemp creates 0600; a sound file is an ordinary, shareable output.
-  ::fchmod(temporary.fd(), 0644);
+  // The one temporary of the project (beside the target, removed on every early return), so a
+  // failure leaves neither a half-written target nor a stray temporary behind.
+  frep::durable::PendingFile temporary(path);
+  if (!temporary.error().empty())
+    return { where + temporary.error() };
 
   SF_INFO info{};
   info.samplerate = sample_rate;
@@ -116,8 +62,7 @@ WavWriteResult write_wav(const std::filesystem::path& path,
   if (!sf_format_check(&info))
     return { where + "libsndfile rejects this format" };
 
-  // SF_FALSE: the descriptor stays ours (TemporaryFile closes it), whatever libsndfile does.
-  SNDFILE* file = sf_open_fd(temporary.fd(), SFM_WRITE, &info, SF_FALSE);
+  SNDFILE* file = sf_open(temporary.temporary().c_str(), SFM_WRITE, &info);
   if (file == nullptr)
     return { where + sf_strerror(nullptr) };
   if (encoding == WavEncoding::Pcm16)
@@ -131,9 +76,7 @@ WavWriteResult write_wav(const std::filesystem::path& path,
   if (!write_error.empty())
     return { where + write_error };
 
-  if (const int status = temporary.close(); status != 0)
-    return { where + "close: " + system_message(status) };
-  if (std::string problem = temporary.rename_to(path.string()); !problem.empty())
+  if (std::string problem = temporary.commit(); !problem.empty())
     return { where + problem };
   return {};
 }

@@ -2,7 +2,7 @@
 // place in the document. The writer is mapping_json_writer.cpp.
 #include "Plan/mapping_json.h"
 
-#include "Plan/mapping_json_names.h"
+#include "Plan/detail/mapping_json_names.h"
 #include "Plan/colour_maps.h"
 #include "Plan/path.h"
 #include "Plan/unit_map.h"

@@ -2,7 +2,7 @@
 // mapping_json_reader.cpp.
 #include "Plan/mapping_json.h"
 
-#include "Plan/mapping_json_names.h"
+#include "Plan/detail/mapping_json_names.h"
 
 #include <algorithm>
 #include <string>

@@ -4,7 +4,7 @@
 // only when nothing is wrong, fill the samples.
 #include "Plan/mapping_plan.h"
 
-#include "Plan/planner.h"
+#include "Plan/detail/planner.h"
 
 #include <algorithm>
 #include <cmath>

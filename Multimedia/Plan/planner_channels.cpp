@@ -1,6 +1,6 @@
 // The Planner's channels: each resolved (range, target, map), the placing channels (world,
 // dynamic, spreadsheet, fixed) checked, and the values of the others.
-#include "Plan/planner.h"
+#include "Plan/detail/planner.h"
 
 #include "Plan/colour_maps.h"
 

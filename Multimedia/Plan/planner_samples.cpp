@@ -1,6 +1,6 @@
 // The Planner's samples: the spreadsheet's cells, the animation's frames and the still shape,
 // each with its channels applied.
-#include "Plan/planner.h"
+#include "Plan/detail/planner.h"
 
 #include "Plan/colour_maps.h"
 

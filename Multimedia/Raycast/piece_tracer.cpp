@@ -1,4 +1,4 @@
-#include "Raycast/piece_tracer.h"
+#include "Raycast/detail/piece_tracer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 #include "Raycast/raycast.h"
 
-#include "Raycast/piece_tracer.h"
-#include "Raycast/shadow_map.h"
+#include "Raycast/detail/piece_tracer.h"
+#include "Raycast/detail/shadow_map.h"
 #include "Mesh/solid_bounds.h"
-#include "Raycast/surface_shading.h"
-#include "Raycast/view_rays.h"
+#include "Raycast/detail/surface_shading.h"
+#include "Raycast/detail/view_rays.h"
 
 #include "Eval/gradient_evaluator.h"
 #include "Eval/point_evaluator.h"

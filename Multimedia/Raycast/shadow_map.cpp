@@ -1,4 +1,4 @@
-#include "Raycast/shadow_map.h"
+#include "Raycast/detail/shadow_map.h"
 
 #include <algorithm>
 #include <cmath>

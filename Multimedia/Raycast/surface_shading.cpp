@@ -1,4 +1,4 @@
-#include "Raycast/surface_shading.h"
+#include "Raycast/detail/surface_shading.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "Raycast/view_rays.h"
+#include "Raycast/detail/view_rays.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "Render/mesh_raster.h"
+#include "Render/detail/mesh_raster.h"
 
-#include "Render/render_parallel.h"
+#include "Render/detail/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

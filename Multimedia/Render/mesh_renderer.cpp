@@ -1,8 +1,8 @@
 #include "Render/mesh_renderer.h"
 
-#include "Render/mesh_raster.h"
-#include "Render/mesh_setup.h"
-#include "Render/render_parallel.h"
+#include "Render/detail/mesh_raster.h"
+#include "Render/detail/mesh_setup.h"
+#include "Render/detail/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

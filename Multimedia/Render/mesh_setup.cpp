@@ -1,7 +1,7 @@
-#include "Render/mesh_setup.h"
+#include "Render/detail/mesh_setup.h"
 
 #include "Render/normal_matrix.h"
-#include "Render/render_parallel.h"
+#include "Render/detail/render_parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -293,7 +293,7 @@ class RepositoryRulesTest(unittest.TestCase):
             rules = checker.parse_rules(handle.read(), path)
         self.assertIn("FRep/Compiler", rules.units)
         self.assertIn("no-vtk", rules.units["FRep/Language"].flags)
-        self.assertEqual(rules.settings["include-root"], ["FRep", "Multimedia"])
+        self.assertEqual(rules.settings["include-root"], ["FRep", "Multimedia", "Support"])
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@
 // relies on (semantics::validate_object_graph throws only on ASTs the parser never produces),
 // and its default object is one of its objects.
 #include "Language/parser.h"
-#include "Semantics/ast_validation.h"
+#include "Semantics/detail/ast_validation.h"
 #include "fuzz_check.h"
 
 #include <algorithm>

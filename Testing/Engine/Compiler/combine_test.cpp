@@ -7,8 +7,8 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
-#include "Semantics/runtime_messages.h"
-#include "Compiler/tape_check.h"
+#include "Semantics/detail/runtime_messages.h"
+#include "Compiler/detail/tape_check.h"
 #include "Language/parser.h"
 
 #include <gtest/gtest.h>

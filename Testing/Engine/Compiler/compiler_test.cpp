@@ -1,6 +1,6 @@
 // Unit tests of the compiler: bit-exact folding, hash-consing, specialisation, fallback.
-#include "Compiler/dag.h"
-#include "Compiler/expr.h"
+#include "Compiler/detail/dag.h"
+#include "Compiler/detail/expr.h"
 #include "Compiler/model.h"
 #include "Semantics/interpreter.h"
 #include "Eval/interval_evaluator.h"

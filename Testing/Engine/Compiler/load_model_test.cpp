@@ -3,7 +3,7 @@
 // and the same diagnostics for every kind of bad input.
 #include "Compiler/load_model.h"
 #include "Eval/point_evaluator.h"
-#include "Semantics/runtime_messages.h"
+#include "Semantics/detail/runtime_messages.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Compiler/opcode.h: the one description of each opcode agrees with its value rule
-// (Compiler/op_eval.h) on the properties the value decides, and names every opcode once.
-#include "Compiler/op_eval.h"
+// (Compiler/detail/op_eval.h) on the properties the value decides, and names every opcode once.
+#include "Compiler/detail/op_eval.h"
 #include "Compiler/opcode.h"
 
 #include <gtest/gtest.h>

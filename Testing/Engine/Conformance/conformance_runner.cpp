@@ -1,6 +1,6 @@
 #include "conformance_runner.h"
 
-#include "Compiler/library_call.h"
+#include "Compiler/detail/library_call.h"
 #include "Compiler/model.h"
 #include "Eval/point_evaluator.h"
 

@@ -16,7 +16,7 @@
 #include "Eval/batch_evaluator.h"
 #include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
-#include "Eval/jit_kernel.h"
+#include "Eval/detail/jit_kernel.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/tape_simplifier.h"
 #include "Language/parser.h"

@@ -1,5 +1,5 @@
 #include "Eval/batch_evaluator.h"
-#include "Eval/jit_kernel.h"
+#include "Eval/detail/jit_kernel.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/thread_pool.h"
 

@@ -1,7 +1,7 @@
-// Executable memory reused from kernel to kernel (Eval/code_memory.h) and the LazyKernel policy
-// that reuses it only when no kernel still runs from it.
-#include "Eval/code_memory.h"
-#include "Eval/jit_kernel.h"
+// Executable memory reused from kernel to kernel (Eval/detail/code_memory.h) and the LazyKernel
+// policy that reuses it only when no kernel still runs from it.
+#include "Eval/detail/code_memory.h"
+#include "Eval/detail/jit_kernel.h"
 
 #include "eval_test_support.h"
 

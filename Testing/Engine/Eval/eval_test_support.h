@@ -1,7 +1,7 @@
 // Hand-built tapes and an independent reference for the evaluator tests.
 #pragma once
 
-#include "Semantics/op_semantics.h"
+#include "Semantics/detail/op_semantics.h"
 #include "Compiler/tape.h"
 
 #include <atomic>

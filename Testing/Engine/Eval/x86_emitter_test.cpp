@@ -2,7 +2,7 @@
 // with GNU objdump (binutils 2.40, `objdump -D -b binary -mi386:x86-64 -M intel`), which printed
 // the row's name. Covers every operand form the JIT uses: high registers (REX/VEX extension
 // bits), rsp/r12 bases (SIB), rbp/r13 bases, index registers, immediates, is4 operands.
-#include "Eval/x86_emitter.h"
+#include "Eval/detail/x86_emitter.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Lexer: token kinds, positions, case folding, reserved words, limits, CR handling.
-#include "Language/lexer.h"
+#include "Language/detail/lexer.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // lexical/number_literal_values of the conformance suite (the model returns the literal).
 #include "test_support.h"
 
-#include "Language/number_literal.h"
+#include "Language/detail/number_literal.h"
 
 #include <gtest/gtest.h>
 

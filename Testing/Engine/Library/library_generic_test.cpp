@@ -4,7 +4,7 @@
 // values and array effects of library::call.
 #include "library_test_support.h"
 
-#include "Library/library_generic.h"
+#include "Library/detail/library_generic.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include "Eval/point_evaluator.h"
 #include "Eval/thread_pool.h"
 #include "Language/parser.h"
-#include "Mesh/cube_topology.h"
+#include "Mesh/detail/cube_topology.h"
 #include "Mesh/mesh_topology.h"
 #include "Mesh/surface.h"
 

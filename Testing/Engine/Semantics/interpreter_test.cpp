@@ -1,7 +1,7 @@
 // Unit tests of the reference interpreter (the conformance suite is the broad check; these pin
 // the API contract: state between points, error reporting, object calls, robustness, threads).
 #include "Semantics/interpreter.h"
-#include "Semantics/runtime_messages.h"
+#include "Semantics/detail/runtime_messages.h"
 #include "Language/parser.h"
 
 #include <gtest/gtest.h>

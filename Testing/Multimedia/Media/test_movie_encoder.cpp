@@ -83,7 +83,9 @@ TEST(MovieEncoder, FramesAndSoundMakeAnMp4OfTheSameDuration)
   const MovieResult result = encode_movie(input, output, options);
   ASSERT_TRUE(result.ok()) << result.error;
   EXPECT_TRUE(std::filesystem::is_regular_file(output));
-  EXPECT_FALSE(std::filesystem::exists(directory / "movie.partial.mp4"));
+  for (const auto& entry : std::filesystem::directory_iterator(directory))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+      << "temporary left behind: " << entry.path();
   ASSERT_FALSE(progress.empty());
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_EQ(progress.back(), frame_count);

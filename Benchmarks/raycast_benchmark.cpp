@@ -9,7 +9,7 @@
 #include "benchmark_cli.h"
 
 #include "Raycast/raycast.h"
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 
 #include "Compiler/model.h"
@@ -97,8 +97,8 @@ int main(int argc, char** argv)
   const auto tape = model->specialise(spec);
   const int width = static_cast<int>(size.at(0)), height = static_cast<int>(size.at(1));
   const std::array<double, 3> lo{ -10, -10, -10 }, hi{ 10, 10, 10 };
-  const frep::render::Camera camera =
-    frep::render::fit_box(lo, hi, static_cast<double>(width) / height, 25.0, 15.0);
+  const frep::imaging::Camera camera =
+    frep::imaging::fit_box(lo, hi, static_cast<double>(width) / height, 25.0, 15.0);
   frep::raycast::Floor floor;
   floor.height = -10;
   floor.origin = { -16, -16 };
@@ -112,7 +112,7 @@ int main(int argc, char** argv)
   style.render.threads = threads; // the mesh renderer's, below
   frep::RunControl run;
   run.threads = threads;
-  frep::render::Image ray_picture(width, height, { 1, 1, 1, 1 });
+  frep::imaging::Image ray_picture(width, height, { 1, 1, 1, 1 });
   const frep::raycast::Result r = frep::raycast::render(
     ray_picture, camera, shape, with_floor ? &floor : nullptr, style, nullptr, run);
   if (!r.ok())
@@ -130,12 +130,12 @@ int main(int argc, char** argv)
   const frep::mesh::ExtractResult m = frep::mesh::extract_surface(tape, g, eo);
   const double mesh_s = seconds_since(t0);
   t0 = Clock::now();
-  frep::render::Image mesh_picture(width, height, { 1, 1, 1, 1 });
+  frep::imaging::Image mesh_picture(width, height, { 1, 1, 1, 1 });
   frep::render::MeshInput mi;
   mi.points = m.surface.points;
   mi.triangles = m.surface.cells;
   mi.normals = m.surface.normals;
-  frep::render::RenderStyle rs;
+  frep::imaging::RenderStyle rs;
   rs.threads = threads;
   frep::render::render_mesh(mesh_picture, camera, mi, rs);
   const double raster_s = seconds_since(t0);

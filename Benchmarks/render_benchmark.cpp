@@ -1,6 +1,6 @@
 // Timing of the mesh renderer (not a test): a ~300k-triangle rippled sphere at 1280 x 720 with
 // 2 x 2 supersampling, 1 thread and all threads. Usage: frep_render_benchmark [repeats] [out.ppm]
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 #include "test_meshes.h"
 
@@ -11,6 +11,7 @@
 #include <string>
 
 using namespace frep::render;
+namespace imaging = frep::imaging;
 
 int main(int argc, char** argv)
 {
@@ -21,19 +22,20 @@ int main(int argc, char** argv)
   in.points = mesh.points;
   in.triangles = mesh.triangles;
   in.colours = mesh.colours;
-  const Camera camera = fit_box({ -1.1, -1.1, -1.1 }, { 1.1, 1.1, 1.1 }, 1280.0 / 720.0, 30, 20);
+  const imaging::Camera camera =
+    imaging::fit_box({ -1.1, -1.1, -1.1 }, { 1.1, 1.1, 1.1 }, 1280.0 / 720.0, 30, 20);
   std::printf("%zu triangles, %zu points, 1280 x 720, supersample 2\n",
     mesh.triangles.size() / 3,
     mesh.points.size() / 3);
   for (const int threads : { 1, 0 })
   {
-    RenderStyle style;
+    imaging::RenderStyle style;
     style.threads = threads;
     double best = 1e30, total = 0;
-    Image image;
+    imaging::Image image;
     for (int r = 0; r < repeats; ++r)
     {
-      image = Image(1280, 720, { 1, 1, 1, 1 });
+      image = imaging::Image(1280, 720, { 1, 1, 1, 1 });
       const auto t0 = std::chrono::steady_clock::now();
       const RenderReport report = render_mesh(image, camera, in, style);
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -52,7 +54,7 @@ int main(int argc, char** argv)
       repeats);
     if (argc > 2 && threads == 0)
     {
-      const std::string error = write_ppm(image, argv[2]);
+      const std::string error = imaging::write_ppm(image, argv[2]);
       if (!error.empty())
       {
         std::fprintf(stderr, "%s\n", error.c_str());

@@ -14,8 +14,8 @@
 
 #include "Raycast/raycast.h"
 #include "Raycast/shape_camera.h"
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
 
 #include <algorithm>
 #include <atomic>
@@ -52,7 +52,7 @@ struct vtkFRepRayCaster::Internals
   double Box[6] = { 0, 0, 0, 0, 0, 0 }; // lo, hi per axis
 
   // The execution's camera and floor, once the tape is known (see Fit).
-  frep::render::Camera Camera;
+  frep::imaging::Camera Camera;
   std::optional<frep::raycast::Floor> Floor;
   void Fit(vtkFRepRayCaster& self, frep::raycast::Shape& shape);
 };
@@ -77,7 +77,7 @@ void vtkFRepRayCaster::Internals::Fit(vtkFRepRayCaster& self, frep::raycast::Sha
   std::copy(this->Camera.position.begin(), this->Camera.position.end(), self.CameraPosition);
   std::copy(
     this->Camera.focal_point.begin(), this->Camera.focal_point.end(), self.CameraFocalPoint);
-  const frep::render::CameraFrame frame = frep::render::camera_frame(this->Camera);
+  const frep::imaging::CameraFrame frame = frep::imaging::camera_frame(this->Camera);
   std::copy(frame.up.begin(), frame.up.end(), self.CameraViewUp);
   self.CameraParallelScale = this->Camera.orthographic ? this->Camera.parallel_scale : 0.0;
 }
@@ -196,7 +196,7 @@ int vtkFRepRayCaster::RequestUpdateExtent(vtkInformation*,
 // The engine's picture as the output's point data: Colour (sRGB bytes with alpha) and Depth. The
 // engine's rows run top to bottom, VTK's image rows bottom to top. Throws std::bad_alloc.
 static void StorePicture(
-  const frep::render::Image& picture, const std::vector<float>& depth, vtkImageData* output)
+  const frep::imaging::Image& picture, const std::vector<float>& depth, vtkImageData* output)
 {
   const int width = picture.width, height = picture.height;
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -222,7 +222,7 @@ static void StorePicture(
       unsigned char* q = c + 4 * (row + x);
       for (int k = 0; k < 3; ++k)
       {
-        q[k] = ToByte(frep::render::linear_to_srgb(p[k]));
+        q[k] = ToByte(frep::imaging::linear_to_srgb(p[k]));
       }
       q[3] = ToByte(p[3]);
       d[row + x] = depth[static_cast<std::size_t>(y) * width + x];
@@ -270,7 +270,7 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
   {
     shape.box[a] = { in.Box[2 * a], in.Box[2 * a + 1] };
   }
-  const frep::render::Rgba colour = frep::render::srgb(
+  const frep::imaging::Rgba colour = frep::imaging::srgb(
     Clamp01(this->Colour[0]), Clamp01(this->Colour[1]), Clamp01(this->Colour[2]));
   shape.colour = { colour.r, colour.g, colour.b };
   frep::raycast::Style style;
@@ -281,9 +281,9 @@ int vtkFRepRayCaster::RequestData(vtkInformation*,
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   try
   {
-    frep::render::Image picture(width,
+    frep::imaging::Image picture(width,
       height,
-      frep::render::srgb(Clamp01(this->Background[0]),
+      frep::imaging::srgb(Clamp01(this->Background[0]),
         Clamp01(this->Background[1]),
         Clamp01(this->Background[2]),
         Clamp01(this->Background[3])));

@@ -3,7 +3,7 @@
  * @brief   draws a 3-D FRep object by rays: a picture as vtkImageData with "Colour" and "Depth"
  *
  * vtkFRepRayCaster renders the solid F >= 0 of a 3-D vtkFRepObject directly from its function,
- * without a mesh, with FRepKit's ray caster (frep::raycast::render, Multimedia/Raycast/raycast.h):
+ * without a mesh, with FRepKit's ray caster (frep::raycast::render, FRep/Raycast/raycast.h):
  * every pixel casts a ray and finds the first point where F >= 0 (interval-pruned search and
  * root refinement on the object's specialised tape), shaded with the gradient's normal under the
  * mesh renderer's light kit. The solid is cut by ModelBounds; where it meets the box the cut
@@ -22,7 +22,7 @@
  *   pixel takes the nearest of its samples); +infinity (IEEE) where nothing was hit, so
  *   std::isfinite / numpy.isfinite tells covered pixels from the background.
  *
- * CAMERA: the one frep::render::fit_box makes from the direction (Azimuth, Elevation): with z
+ * CAMERA: the one frep::imaging::fit_box makes from the direction (Azimuth, Elevation): with z
  * up, Elevation is the angle above the xy plane and Azimuth turns counter-clockwise about +z
  * starting from -y (Azimuth 0, Elevation 0 looks along +y with x to the right; 90 looks along
  * -x). It frames the solid, not the box (FrameSolid, the default): the solid as seen from

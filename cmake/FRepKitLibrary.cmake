@@ -6,7 +6,7 @@
 #
 # The public/private line: PUBLIC_HEADERS (paths relative to the current folder) form the
 # target's HEADERS file set, rooted at INCLUDE_ROOT — the folder users include from, so that
-# `#include "Compiler/model.h"` (engine, root FRep/) or `#include "Render/image.h"` (root
+# `#include "Compiler/model.h"` (engine, root FRep/) or `#include "Render/mesh_renderer.h"` (root
 # Multimedia/) reads the same in the build tree and in an installed tree. Every other header is
 # private: reachable from inside the project's build, never installed. More public headers can be
 # added from subfolders with frepkit_add_public_headers().

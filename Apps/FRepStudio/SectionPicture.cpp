@@ -14,11 +14,11 @@ namespace frepstudio
 
 std::array<float, 3> default_face_colour_linear()
 {
-  return { frep::render::srgb_to_linear(50 / 255.0F), frep::render::srgb_to_linear(200 / 255.0F),
-    frep::render::srgb_to_linear(80 / 255.0F) };
+  return { frep::imaging::srgb_to_linear(50 / 255.0F), frep::imaging::srgb_to_linear(200 / 255.0F),
+    frep::imaging::srgb_to_linear(80 / 255.0F) };
 }
 
-QImage to_qimage(const frep::render::Image& picture)
+QImage to_qimage(const frep::imaging::Image& picture)
 {
   QImage image(picture.width, picture.height, QImage::Format_RGB888);
   for (int y = 0; y < picture.height; ++y)
@@ -29,7 +29,7 @@ QImage to_qimage(const frep::render::Image& picture)
       const float* p = picture.pixel(x, y);
       for (int c = 0; c < 3; ++c)
         row[3 * x + c] = static_cast<uchar>(
-          std::lround(std::clamp(frep::render::linear_to_srgb(p[c]), 0.0F, 1.0F) * 255));
+          std::lround(std::clamp(frep::imaging::linear_to_srgb(p[c]), 0.0F, 1.0F) * 255));
     }
   }
   return image;
@@ -57,14 +57,14 @@ QImage section_picture(const SectionPictureRequest& request,
   else
     shape.colour = default_face_colour_linear();
 
-  frep::render::Image picture(request.width, request.height, frep::render::srgb(0, 0, 0));
+  frep::imaging::Image picture(request.width, request.height, frep::imaging::srgb(0, 0, 0));
   for (int y = 0; y < picture.height; ++y)
   {
     // Row 0 is the top of the picture.
     const float t = picture.height > 1 ? 1.0F - static_cast<float>(y) / (picture.height - 1) : 0;
     std::array<float, 3> colour;
     for (int c = 0; c < 3; ++c)
-      colour[c] = frep::render::srgb_to_linear(
+      colour[c] = frep::imaging::srgb_to_linear(
         request.background_bottom[c] + t * (request.background_top[c] - request.background_bottom[c]));
     for (int x = 0; x < picture.width; ++x)
       std::copy(colour.begin(), colour.end(), picture.pixel(x, y));

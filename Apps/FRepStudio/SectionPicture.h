@@ -4,8 +4,8 @@
 
 #include "SectionSpec.h"
 #include "Compiler/model.h"
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
 
 #include <QImage>
 
@@ -19,7 +19,7 @@ namespace frepstudio
 
 struct SectionPictureRequest : SectionSpec
 {
-  frep::render::Camera camera;       ///< in x1..x3 (the section is drawn where it is)
+  frep::imaging::Camera camera;       ///< in x1..x3 (the section is drawn where it is)
   int width = 160;
   int height = 160;
   /// sRGB background, from the bottom row to the top row (a vertical gradient, as VTK's).
@@ -35,7 +35,7 @@ QImage section_picture(const SectionPictureRequest& request,
   const std::function<bool()>& keep_going);
 
 /// The renderer's linear picture as an 8-bit sRGB QImage.
-QImage to_qimage(const frep::render::Image& picture);
+QImage to_qimage(const frep::imaging::Image& picture);
 
 /// hfp's face colour (50, 200, 80), the sections' colour when the model has no s[] colours.
 std::array<float, 3> default_face_colour_linear();

@@ -231,10 +231,10 @@ vtkGenericOpenGLRenderWindow* SectionView::renderWindow() const
   return window_;
 }
 
-frep::render::Camera SectionView::camera() const
+frep::imaging::Camera SectionView::camera() const
 {
   vtkCamera* vtk_camera = renderer_->GetActiveCamera();
-  frep::render::Camera camera;
+  frep::imaging::Camera camera;
   vtk_camera->GetPosition(camera.position.data());
   vtk_camera->GetFocalPoint(camera.focal_point.data());
   vtk_camera->GetViewUp(camera.view_up.data());

@@ -9,7 +9,7 @@
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include <array>
 
@@ -52,7 +52,7 @@ public:
   vtkGenericOpenGLRenderWindow* renderWindow() const;
 
   /// The view's camera as the headless renderers' camera (x1..x3 are the world).
-  frep::render::Camera camera() const;
+  frep::imaging::Camera camera() const;
   /// The render window's size in device pixels (what a picture must have to fill it).
   QSize pixelSize() const;
   /// The background gradient's colours, bottom and top (what a picture's background must be).

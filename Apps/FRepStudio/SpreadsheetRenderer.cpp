@@ -6,7 +6,7 @@
 
 #include "Compiler/attribute_rgb.h"
 #include "Mesh/surface.h"
-#include "Render/image.h"
+#include "Imaging/image.h"
 #include "Render/mesh_renderer.h"
 
 #include <cmath>
@@ -22,13 +22,13 @@ namespace
 // The 3-D view's default direction (SectionView), closer than where the box's bounding sphere
 // would fit: the box's corners leave the picture, but the shapes (usually well inside the
 // box) are large enough to read in a small cell.
-frep::render::Camera cell_camera(const CellRequest& request)
+frep::imaging::Camera cell_camera(const CellRequest& request)
 {
   constexpr double kFill = 1.3;
   const double angle = 30.0;
-  frep::render::Camera camera;
+  frep::imaging::Camera camera;
   camera.view_angle_deg = angle;
-  frep::render::Vec3 centre{};
+  frep::imaging::Vec3 centre{};
   double radius = 0;
   for (int i = 0; i < 3; ++i)
   {
@@ -37,7 +37,7 @@ frep::render::Camera cell_camera(const CellRequest& request)
   }
   radius = std::sqrt(radius);
   const double distance = radius / std::sin(angle / 2 * M_PI / 180) / kFill;
-  const frep::render::Vec3 direction{ 1, 0.8, 2.2 };
+  const frep::imaging::Vec3 direction{ 1, 0.8, 2.2 };
   const double length = std::sqrt(1 + 0.64 + 4.84);
   for (int i = 0; i < 3; ++i)
     camera.position[i] = centre[i] + direction[i] / length * distance;
@@ -89,9 +89,9 @@ QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::Threa
   if (!result.ok())
     return {};
 
-  const frep::render::Camera camera = cell_camera(request);
-  frep::render::Image picture(request.pixels, request.pixels,
-    frep::render::srgb(kCellBackground[0], kCellBackground[1], kCellBackground[2]));
+  const frep::imaging::Camera camera = cell_camera(request);
+  frep::imaging::Image picture(request.pixels, request.pixels,
+    frep::imaging::srgb(kCellBackground[0], kCellBackground[1], kCellBackground[2]));
   std::vector<float> colours;
   frep::render::MeshInput mesh;
   mesh.points = result.surface.points;
@@ -104,14 +104,14 @@ QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::Threa
            static_cast<std::size_t>(surface.attribute_count),
            surface.point_count()))
       for (float component : c)
-        colours.push_back(frep::render::srgb_to_linear(component));
+        colours.push_back(frep::imaging::srgb_to_linear(component));
     mesh.colours = colours;
   }
   else
   {
     mesh.colour = default_face_colour_linear(); // as in the 3-D view
   }
-  frep::render::RenderStyle style;
+  frep::imaging::RenderStyle style;
   style.threads = 1; // cells are small; the mesher already uses the cores
   if (!frep::render::render_mesh(picture, camera, mesh, style).ok() || !keep_going())
     return {};

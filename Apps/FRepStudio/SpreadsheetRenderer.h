@@ -1,6 +1,6 @@
 // One cell of the spreadsheet of cross-sections: the section of a model at given fixed values,
 // meshed by the engine and drawn by the headless software renderer (Multimedia/Render), or drawn
-// by rays from the function itself (Multimedia/Raycast: no facets, no detail lost below the
+// by rays from the function itself (FRep/Raycast: no facets, no detail lost below the
 // grid), so cells are made on a worker thread without touching OpenGL.
 #pragma once
 

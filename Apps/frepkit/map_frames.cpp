@@ -160,7 +160,7 @@ void render_frames(const MapOptions& options,
   const bool on_floor = render.scene == mapping::RenderSettings::Scene::Floor;
   const mapping::FloorScene scene =
     on_floor ? mapping::make_floor_scene(plan, in.spec, aspect, in.framing) : mapping::FloorScene{};
-  const frep::render::Camera camera =
+  const frep::imaging::Camera camera =
     on_floor ? scene.camera
              : mapping::frame_camera(plan, render, render.width, render.height, in.framing);
   std::atomic<std::size_t> reused_count{ 0 };

@@ -17,7 +17,7 @@
 
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
-#include "Render/image.h"
+#include "Imaging/image.h"
 #include "Scene/floor_scene.h"
 #include "Scene/framing.h"
 #include "Scene/pictures.h"
@@ -52,7 +52,7 @@ double seconds_since(Clock::time_point start);
 std::string read_file(const std::string& path, const char* what);
 
 /// Written under a temporary name, renamed when complete (AtomicOutput, Support/Durable).
-void write_png_file(const fs::path& path, const frep::render::Image& image);
+void write_png_file(const fs::path& path, const frep::imaging::Image& image);
 void write_text_file(const fs::path& path, const std::string& text);
 
 /// A sample's label and its values by coordinate name (NaN values left out), for the manifest.
@@ -150,14 +150,14 @@ public:
   /// mapping::stand_on_floor). A UserError when interrupted or failed.
   struct Picture
   {
-    frep::render::Image image;
+    frep::imaging::Image image;
     double mesh_seconds = 0.0;   ///< meshing (0 when ray-cast)
     double render_seconds = 0.0; ///< rasterising or ray casting
     std::size_t triangles = 0;
   };
   Picture picture(mapping::RenderSettings::Method method,
     const mapping::Sample& sample,
-    const frep::render::Camera& camera,
+    const frep::imaging::Camera& camera,
     int width,
     int height,
     int worker,

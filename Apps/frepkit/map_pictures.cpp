@@ -10,7 +10,7 @@ namespace
 
 // The manifest's entry of the spreadsheet: its size, grid and every cell's values and place.
 nlohmann::json spreadsheet_json(const MapInputs& in,
-  const frep::render::Image& sheet,
+  const frep::imaging::Image& sheet,
   const std::vector<std::array<int, 4>>& rects)
 {
   const mapping::Plan& plan = in.plan;
@@ -45,8 +45,8 @@ void render_spreadsheet(const MapInputs& in,
   const mapping::Plan& plan = in.plan;
   const mapping::Spec& spec = in.spec;
   const int cell_px = spec.spreadsheet.cell_size;
-  const frep::render::Camera camera = mapping::plan_camera(plan, spec.render, 1.0, in.framing);
-  std::vector<frep::render::Image> pictures(plan.cells.size());
+  const frep::imaging::Camera camera = mapping::plan_camera(plan, spec.render, 1.0, in.framing);
+  std::vector<frep::imaging::Image> pictures(plan.cells.size());
   Ledger cell_ledger;
   workers.parallel(plan.cells.size(),
     [&](std::size_t i, int worker)
@@ -57,7 +57,7 @@ void render_spreadsheet(const MapInputs& in,
       workers.advance();
     });
   std::vector<std::array<int, 4>> rects;
-  const frep::render::Image sheet =
+  const frep::imaging::Image sheet =
     mapping::compose_spreadsheet(plan, pictures, spec, workers.kit(0), &rects);
   write_png_file(out_dir / "spreadsheet.png", sheet);
   record.files.push_back(spreadsheet_json(in, sheet, rects));
@@ -75,7 +75,7 @@ void render_shape(const MapInputs& in,
   const auto t0 = Clock::now();
   const mapping::Plan& plan = in.plan;
   const mapping::RenderSettings& render = in.spec.render;
-  const frep::render::Camera camera = mapping::plan_camera(
+  const frep::imaging::Camera camera = mapping::plan_camera(
     plan, render, static_cast<double>(render.width) / render.height, in.framing);
   const MapWorkers::Picture p =
     workers.picture(render.method, plan.still, camera, render.width, render.height, 0, workers.count());
@@ -100,7 +100,7 @@ void draw_path(const MapInputs& in, MapWorkers& workers, const fs::path& out_dir
 {
   const auto t0 = Clock::now();
   const mapping::Plan& plan = in.plan;
-  const frep::render::Image picture = mapping::path_picture(plan, 900, workers.kit(0));
+  const frep::imaging::Image picture = mapping::path_picture(plan, 900, workers.kit(0));
   write_png_file(out_dir / "path.png", picture);
   record.files.push_back(
     { { "file", "path.png" }, { "kind", "path" }, { "coordinates", plan.dynamic_coordinates } });

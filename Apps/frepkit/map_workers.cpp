@@ -21,10 +21,10 @@ double seconds_since(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void write_png_file(const fs::path& path, const frep::render::Image& image)
+void write_png_file(const fs::path& path, const frep::imaging::Image& image)
 {
   frep::durable::AtomicOutput out(path.string());
-  write_png(out.stream(), image.width, image.height, frep::render::to_rgb8(image));
+  write_png(out.stream(), image.width, image.height, frep::imaging::to_rgb8(image));
   out.commit();
 }
 
@@ -125,7 +125,7 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
 
 MapWorkers::Picture MapWorkers::picture(mapping::RenderSettings::Method method,
   const mapping::Sample& sample,
-  const frep::render::Camera& camera,
+  const frep::imaging::Camera& camera,
   int width,
   int height,
   int worker,

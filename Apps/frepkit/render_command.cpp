@@ -15,8 +15,8 @@
 
 #include "Raycast/raycast.h"
 #include "Raycast/shape_camera.h"
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,7 +44,7 @@ std::array<float, 3> linear_rgb(const std::vector<double>& srgb, const char* opt
       throw UserError(std::string(option) + ": every component must be in 0..1");
     }
   }
-  const frep::render::Rgba c = frep::render::srgb(srgb[0], srgb[1], srgb[2]);
+  const frep::imaging::Rgba c = frep::imaging::srgb(srgb[0], srgb[1], srgb[2]);
   return { c.r, c.g, c.b };
 }
 
@@ -162,7 +162,7 @@ int run_render(const RenderOptions& options)
   view.floor = options.floor;
   view.threads = options.threads;
   const frep::raycast::FramedShape framed = frep::raycast::frame_shape(shape, view);
-  const frep::render::Camera& camera = framed.camera;
+  const frep::imaging::Camera& camera = framed.camera;
 
   frep::raycast::Style style;
   style.render.supersample = options.supersample;
@@ -170,7 +170,8 @@ int run_render(const RenderOptions& options)
   frep::RunControl run;
   run.threads = options.threads;
   run.cancel = [] { return frep::durable::InterruptGuard::interrupted(); };
-  frep::render::Image picture(width, height, { background[0], background[1], background[2], 1.0F });
+  frep::imaging::Image picture(
+    width, height, { background[0], background[1], background[2], 1.0F });
   const frep::raycast::Result r = frep::raycast::render(picture,
     camera,
     shape,
@@ -185,7 +186,7 @@ int run_render(const RenderOptions& options)
   }
   {
     frep::durable::AtomicOutput out(options.output);
-    write_png(out.stream(), width, height, frep::render::to_rgb8(picture));
+    write_png(out.stream(), width, height, frep::imaging::to_rgb8(picture));
     out.commit();
   }
   if (!options.quiet)

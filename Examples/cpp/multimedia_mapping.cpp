@@ -77,8 +77,8 @@ int main(int argc, char** argv)
   // camera framing the solids of all cells (not the model box).
   fm::PictureKit kit;
   const fm::Framing framing = fm::frame_solids(spec.render, model, {}, plan);
-  const frep::render::Camera camera = fm::plan_camera(plan, spec.render, 1.0, framing);
-  std::vector<frep::render::Image> pictures;
+  const frep::imaging::Camera camera = fm::plan_camera(plan, spec.render, 1.0, framing);
+  std::vector<frep::imaging::Image> pictures;
   for (const fm::Sample& cell : plan.cells)
   {
     const fm::Section section = fm::make_section(model, {}, plan, cell);
@@ -102,8 +102,8 @@ int main(int argc, char** argv)
       spec.spreadsheet.cell_size,
       spec.render));
   }
-  const frep::render::Image sheet = fm::compose_spreadsheet(plan, pictures, spec, &kit);
-  const std::string error = frep::render::write_ppm(sheet, argv[2]);
+  const frep::imaging::Image sheet = fm::compose_spreadsheet(plan, pictures, spec, &kit);
+  const std::string error = frep::imaging::write_ppm(sheet, argv[2]);
   if (!error.empty())
   {
     std::cerr << error << "\n";

@@ -29,7 +29,7 @@ std::string number(double v)
 
 } // namespace
 
-PixelBox draw_checkerboard_inset(Image& image, const CheckerboardInset& in, Font* font)
+PixelBox draw_checkerboard_inset(imaging::Image& image, const CheckerboardInset& in, Font* font)
 {
   const PixelBox& r = in.rect;
   if (r.empty())
@@ -116,7 +116,7 @@ PixelBox draw_checkerboard_inset(Image& image, const CheckerboardInset& in, Font
     ahead.insert(ahead.end(),
       path.begin() + static_cast<std::ptrdiff_t>(past - (in.current ? 0 : 1)),
       path.end());
-    Rgba faint = in.path_colour;
+    imaging::Rgba faint = in.path_colour;
     faint.a *= 0.55F;
     draw_polyline(image, ahead, line, faint);
     std::vector<Point2> behind(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(past));
@@ -130,7 +130,7 @@ PixelBox draw_checkerboard_inset(Image& image, const CheckerboardInset& in, Font
   {
     draw_polyline(image, path, line, in.path_colour);
   }
-  const Rgba white{ 1, 1, 1, 1 };
+  const imaging::Rgba white{ 1, 1, 1, 1 };
   for (const Point2& p : in.markers)
   {
     draw_marker(

@@ -186,13 +186,13 @@ void rasterise(Visibility& vis, const MeshSetup& setup, std::size_t first, int t
     });
 }
 
-Shading::Shading(const RenderStyle& style)
+Shading::Shading(const imaging::RenderStyle& style)
   : ambient(static_cast<float>(std::max(0.0, style.ambient)))
   , shininess(static_cast<float>(std::clamp(style.shininess, 0.0, 4096.0)))
   , back_face_factor(static_cast<float>(std::clamp(style.back_face_factor, 0.0, 1.0)))
 {
   integer_shininess = shininess == std::floor(shininess) && shininess <= 1024.0F;
-  for (const Light& light : style.lights)
+  for (const imaging::Light& light : style.lights)
   {
     // The API's z points towards the viewer; ours points away.
     const double x = light.direction[0], y = light.direction[1], z = -light.direction[2];

@@ -10,15 +10,6 @@
 namespace frep::render
 {
 
-std::vector<Light> default_lights()
-{
-  return {
-    { { -0.45, 0.55, 0.70 }, 0.70, 1.0 },  // key: upper left, in front
-    { { 0.60, -0.25, 0.75 }, 0.30, 0.25 }, // fill: lower right, softer, barely glossy
-    { { 0.0, 0.60, -0.80 }, 0.15, 0.0 },   // rim: from behind the top, lifts silhouettes
-  };
-}
-
 namespace
 {
 
@@ -48,7 +39,7 @@ struct Renderer::State
   };
   std::vector<Layer> layers;
 
-  State(int w, int h, const Camera& camera, const RenderStyle& style)
+  State(int w, int h, const imaging::Camera& camera, const imaging::RenderStyle& style)
     : width(std::clamp(w, 0, kMaxSamplesPerSide / clamp_supersample(style.supersample)))
     , height(std::clamp(h, 0, kMaxSamplesPerSide / clamp_supersample(style.supersample)))
     , factor(clamp_supersample(style.supersample))
@@ -60,7 +51,10 @@ struct Renderer::State
   }
 };
 
-Renderer::Renderer(int width, int height, const Camera& camera, const RenderStyle& style)
+Renderer::Renderer(int width,
+  int height,
+  const imaging::Camera& camera,
+  const imaging::RenderStyle& style)
   : state_(std::make_unique<State>(width, height, camera, style))
 {
 }
@@ -106,7 +100,7 @@ RenderReport Renderer::add(const MeshInput& mesh)
   return report;
 }
 
-std::string Renderer::resolve(Image& target) const
+std::string Renderer::resolve(imaging::Image& target) const
 {
   const State& s = *state_;
   if (target.width != s.width || target.height != s.height)
@@ -191,7 +185,7 @@ std::string Renderer::resolve(Image& target) const
           if (sum[3] > 0.0F)
           {
             const float a = sum[3] * inv_samples;
-            blend_pixel(target,
+            imaging::blend_pixel(target,
               x,
               y,
               { sum[0] / sum[3], sum[1] / sum[3], sum[2] / sum[3], std::min(a, 1.0F) });
@@ -202,10 +196,10 @@ std::string Renderer::resolve(Image& target) const
   return {};
 }
 
-RenderReport render_mesh(Image& target,
-  const Camera& camera,
+RenderReport render_mesh(imaging::Image& target,
+  const imaging::Camera& camera,
   const MeshInput& mesh,
-  const RenderStyle& style)
+  const imaging::RenderStyle& style)
 {
   Renderer renderer(target.width, target.height, camera, style);
   RenderReport report = renderer.add(mesh);

@@ -21,8 +21,9 @@
 // over opaque shapes, the common case.
 #pragma once
 
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
+#include "Imaging/lighting.h"
 
 #include <array>
 #include <cstddef>
@@ -53,35 +54,6 @@ struct MeshInput
   std::optional<std::array<double, 16>> transform;
 };
 
-/// A directional light fixed to the camera (it turns with the view, like a studio kit).
-struct Light
-{
-  /// Towards the light, in camera coordinates: x right, y up, z from the scene towards the
-  /// camera. Need not be unit length.
-  std::array<double, 3> direction{ 0.0, 0.0, 1.0 };
-  double intensity = 1.0;
-  double specular = 1.0; ///< scales RenderStyle::specular for this light
-};
-
-/// The default kit: a key light from the camera's upper left (intensity 0.7), a fill light from
-/// the lower right (0.3, little specular) and a faint rim from behind the top (0.15).
-std::vector<Light> default_lights();
-
-struct RenderStyle
-{
-  /// Samples per pixel along each axis (1 = none; 2 or 3 for anti-aliasing; clamped to 1..4).
-  int supersample = 2;
-  /// Worker threads, 0 = all cores. The picture does not depend on it.
-  int threads = 0;
-  std::vector<Light> lights = default_lights();
-  double ambient = 0.25;   ///< light reaching every surface, times its colour
-  double specular = 0.25;  ///< white highlight strength (Blinn-Phong)
-  double shininess = 40.0; ///< Blinn-Phong exponent
-  /// Diffuse factor for back faces (shaded with the flipped normal), so the inside of an open
-  /// surface is told apart from the outside without looking wrong.
-  double back_face_factor = 0.8;
-};
-
 /// What an `add` or `render_mesh` did. `error` non-empty: the input was malformed (array sizes)
 /// and nothing of that mesh was drawn. Triangles with bad ids or non-finite points are skipped
 /// and counted, never an error.
@@ -102,7 +74,10 @@ class Renderer
 {
 public:
   /// A picture of width x height output pixels (the samples are `supersample` times finer).
-  Renderer(int width, int height, const Camera& camera, const RenderStyle& style = {});
+  Renderer(int width,
+    int height,
+    const imaging::Camera& camera,
+    const imaging::RenderStyle& style = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -114,7 +89,7 @@ public:
   /// otherwise an error and nothing drawn). Pixels no mesh covers keep the target's colour;
   /// edges blend with it. Each call composites again (call it on fresh targets, e.g. once per
   /// background, to get the same picture more than once).
-  std::string resolve(Image& target) const;
+  std::string resolve(imaging::Image& target) const;
 
 private:
   struct State;
@@ -122,9 +97,9 @@ private:
 };
 
 /// One mesh over `target` (its size is the picture's size): Renderer + add + resolve.
-RenderReport render_mesh(Image& target,
-  const Camera& camera,
+RenderReport render_mesh(imaging::Image& target,
+  const imaging::Camera& camera,
   const MeshInput& mesh,
-  const RenderStyle& style = {});
+  const imaging::RenderStyle& style = {});
 
 } // namespace frep::render

@@ -316,8 +316,8 @@ void setup_triangles(const MeshInput& mesh,
 
 } // namespace
 
-Projection::Projection(const Camera& camera, int sample_width, int sample_height)
-  : frame(camera_frame(camera))
+Projection::Projection(const imaging::Camera& camera, int sample_width, int sample_height)
+  : frame(imaging::camera_frame(camera))
   , eye(camera.position)
   , orthographic(camera.orthographic)
   , cx(0.5 * sample_width)
@@ -442,7 +442,7 @@ PointData camera_points(const MeshInput& mesh, const Projection& pr, const std::
   pts.sx.resize(n);
   pts.sy.resize(n);
   pts.outcode.resize(n);
-  const CameraFrame& f = pr.frame;
+  const imaging::CameraFrame& f = pr.frame;
   const Vec colour{ mesh.colour[0], mesh.colour[1], mesh.colour[2] };
   parallel_items((n + kPointChunk - 1) / kPointChunk,
     threads,
@@ -490,7 +490,7 @@ std::optional<double> centre_depth(const std::vector<Vec>& world, const PointDat
   const Projection& pr)
 {
   const std::size_t n = world.size();
-  const CameraFrame& f = pr.frame;
+  const imaging::CameraFrame& f = pr.frame;
   Vec lo{ std::numeric_limits<double>::infinity(),
     std::numeric_limits<double>::infinity(),
     std::numeric_limits<double>::infinity() };

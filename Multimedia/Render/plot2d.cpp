@@ -16,7 +16,7 @@ struct PixelRange
   bool empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
-PixelRange clamp_range(const Image& image, double x0, double y0, double x1, double y1)
+PixelRange clamp_range(const imaging::Image& image, double x0, double y0, double x1, double y1)
 {
   const auto lo = [](double v, int n)
   { return static_cast<int>(std::clamp(std::floor(v), 0.0, double(n))); };
@@ -45,7 +45,7 @@ double segment_distance(Point2 p, Point2 a, Point2 b)
 
 // Below one pixel, a shape is drawn one pixel wide with its alpha scaled: thin lines fade
 // instead of breaking up.
-void thin(double& size, Rgba& colour, double minimum)
+void thin(double& size, imaging::Rgba& colour, double minimum)
 {
   if (size < minimum)
   {
@@ -56,7 +56,10 @@ void thin(double& size, Rgba& colour, double minimum)
 
 } // namespace
 
-void draw_polyline(Image& image, std::span<const Point2> points, double width, Rgba colour)
+void draw_polyline(imaging::Image& image,
+  std::span<const Point2> points,
+  double width,
+  imaging::Rgba colour)
 {
   if (points.empty() || !(width > 0.0) || image.empty())
   {
@@ -109,13 +112,13 @@ void draw_polyline(Image& image, std::span<const Point2> points, double width, R
       const float c = coverage[static_cast<std::size_t>(y - box.y0) * bw + (x - box.x0)];
       if (c > 0.0F)
       {
-        blend_pixel(image, x, y, colour, c);
+        imaging::blend_pixel(image, x, y, colour, c);
       }
     }
   }
 }
 
-void fill_circle(Image& image, Point2 centre, double radius, Rgba colour)
+void fill_circle(imaging::Image& image, Point2 centre, double radius, imaging::Rgba colour)
 {
   if (!(radius > 0.0))
   {
@@ -135,24 +138,24 @@ void fill_circle(Image& image, Point2 centre, double radius, Rgba colour)
       const double c = std::clamp(radius + 0.5 - d, 0.0, 1.0);
       if (c > 0.0)
       {
-        blend_pixel(image, x, y, colour, static_cast<float>(c));
+        imaging::blend_pixel(image, x, y, colour, static_cast<float>(c));
       }
     }
   }
 }
 
-void draw_marker(Image& image,
+void draw_marker(imaging::Image& image,
   Point2 centre,
   double radius,
-  Rgba fill,
-  Rgba outline,
+  imaging::Rgba fill,
+  imaging::Rgba outline,
   double outline_width)
 {
   fill_circle(image, centre, radius, outline);
   fill_circle(image, centre, radius - std::max(outline_width, 0.0), fill);
 }
 
-void fill_rect(Image& image, const PixelBox& b, Rgba colour)
+void fill_rect(imaging::Image& image, const PixelBox& b, imaging::Rgba colour)
 {
   if (b.empty())
   {
@@ -165,12 +168,12 @@ void fill_rect(Image& image, const PixelBox& b, Rgba colour)
     for (int x = box.x0; x < box.x1; ++x)
     {
       const double cx = std::min(b.x1, x + 1.0) - std::max(b.x0, double(x));
-      blend_pixel(image, x, y, colour, static_cast<float>(std::clamp(cx * cy, 0.0, 1.0)));
+      imaging::blend_pixel(image, x, y, colour, static_cast<float>(std::clamp(cx * cy, 0.0, 1.0)));
     }
   }
 }
 
-void stroke_rect(Image& image, const PixelBox& b, double width, Rgba colour)
+void stroke_rect(imaging::Image& image, const PixelBox& b, double width, imaging::Rgba colour)
 {
   if (b.empty() || !(width > 0.0))
   {

@@ -7,7 +7,7 @@
 // joins are round and no pixel is blended twice.
 #pragma once
 
-#include "Render/image.h"
+#include "Imaging/image.h"
 #include "Render/text.h"
 
 #include <cstddef>
@@ -27,24 +27,27 @@ struct Point2
 
 /// A polyline of `width` pixels (round joins and caps) through pixel positions (x right, y
 /// down). One point draws a dot; none, nothing.
-void draw_polyline(Image& image, std::span<const Point2> points, double width, Rgba colour);
+void draw_polyline(imaging::Image& image,
+  std::span<const Point2> points,
+  double width,
+  imaging::Rgba colour);
 
 /// A filled disc.
-void fill_circle(Image& image, Point2 centre, double radius, Rgba colour);
+void fill_circle(imaging::Image& image, Point2 centre, double radius, imaging::Rgba colour);
 
 /// A disc with a ring: `fill` inside radius - outline_width, `outline` in the ring.
-void draw_marker(Image& image,
+void draw_marker(imaging::Image& image,
   Point2 centre,
   double radius,
-  Rgba fill,
-  Rgba outline,
+  imaging::Rgba fill,
+  imaging::Rgba outline,
   double outline_width);
 
 /// A filled axis-aligned rectangle; fractional edges get fractional coverage.
-void fill_rect(Image& image, const PixelBox& box, Rgba colour);
+void fill_rect(imaging::Image& image, const PixelBox& box, imaging::Rgba colour);
 
 /// The outline of a rectangle, `width` pixels inside the box.
-void stroke_rect(Image& image, const PixelBox& box, double width, Rgba colour);
+void stroke_rect(imaging::Image& image, const PixelBox& box, double width, imaging::Rgba colour);
 
 /// The picture of a path through a plane (u across, v up) over a checkerboard of that plane.
 struct CheckerboardInset
@@ -72,19 +75,19 @@ struct CheckerboardInset
   /// Line widths and marker radius in pixels; 0: from the inset's size.
   double path_width = 0.0;
   double marker_radius = 0.0;
-  Rgba background =
-    srgb(1.0, 1.0, 1.0, 0.88); ///< panel behind the board (translucent over a frame)
-  Rgba light_square = srgb_hex(0xf2f2f2);
-  Rgba dark_square = srgb_hex(0xc9cdd4);
-  Rgba path_colour = srgb_hex(0x1f5fa8);
-  Rgba past_colour = srgb_hex(0xd1495b);
-  Rgba marker_colour = srgb_hex(0xd1495b);
-  Rgba text_colour = srgb_hex(0x222222);
-  Rgba frame_colour = srgb_hex(0x444444);
+  imaging::Rgba background =
+    imaging::srgb(1.0, 1.0, 1.0, 0.88); ///< panel behind the board (translucent over a frame)
+  imaging::Rgba light_square = imaging::srgb_hex(0xf2f2f2);
+  imaging::Rgba dark_square = imaging::srgb_hex(0xc9cdd4);
+  imaging::Rgba path_colour = imaging::srgb_hex(0x1f5fa8);
+  imaging::Rgba past_colour = imaging::srgb_hex(0xd1495b);
+  imaging::Rgba marker_colour = imaging::srgb_hex(0xd1495b);
+  imaging::Rgba text_colour = imaging::srgb_hex(0x222222);
+  imaging::Rgba frame_colour = imaging::srgb_hex(0x444444);
 };
 
 /// Draw it. `font` may be null: no labels, the board takes the whole rect. Returns the board's
 /// pixel box (where (u_lo, v_lo) .. (u_hi, v_hi) went).
-PixelBox draw_checkerboard_inset(Image& image, const CheckerboardInset& inset, Font* font);
+PixelBox draw_checkerboard_inset(imaging::Image& image, const CheckerboardInset& inset, Font* font);
 
 } // namespace frep::render

@@ -207,7 +207,7 @@ std::vector<PlacedGlyph> place(Font::Impl& impl, std::string_view utf8, long siz
 // FreeType's coverage is tuned for blending in gamma-encoded space, as every text renderer
 // does: blended linearly, dark text on light ground comes out thin and grey at small sizes. So
 // over an opaque pixel the mix is done on sRGB values; elsewhere it is a plain alpha blend.
-void blend_glyph_pixel(Image& image, int x, int y, Rgba colour, float coverage)
+void blend_glyph_pixel(imaging::Image& image, int x, int y, imaging::Rgba colour, float coverage)
 {
   if (x < 0 || y < 0 || x >= image.width || y >= image.height)
   {
@@ -216,14 +216,15 @@ void blend_glyph_pixel(Image& image, int x, int y, Rgba colour, float coverage)
   float* p = image.pixel(x, y);
   if (p[3] < 1.0F)
   {
-    blend_pixel(image, x, y, colour, coverage);
+    imaging::blend_pixel(image, x, y, colour, coverage);
     return;
   }
   const float k = std::clamp(coverage * colour.a, 0.0F, 1.0F);
   const float c[3] = { colour.r, colour.g, colour.b };
   for (int i = 0; i < 3; ++i)
   {
-    p[i] = srgb_to_linear(linear_to_srgb(p[i]) * (1.0F - k) + linear_to_srgb(c[i]) * k);
+    p[i] = imaging::srgb_to_linear(
+      imaging::linear_to_srgb(p[i]) * (1.0F - k) + imaging::linear_to_srgb(c[i]) * k);
   }
 }
 
@@ -400,12 +401,12 @@ TextLayout Font::layout(double x,
   return out;
 }
 
-TextLayout Font::draw(Image& image,
+TextLayout Font::draw(imaging::Image& image,
   double x,
   double y,
   std::string_view utf8,
   double pixel_height,
-  Rgba colour,
+  imaging::Rgba colour,
   Anchor anchor)
 {
   const TextLayout out = layout(x, y, utf8, pixel_height, anchor);
@@ -444,13 +445,13 @@ TextExtent text_extent(Font& font, std::string_view utf8, double pixel_height)
   return { l.box.x1 - l.box.x0, -l.box.y0, l.box.y1, l.ink };
 }
 
-TextLayout draw_text(Image& image,
+TextLayout draw_text(imaging::Image& image,
   Font& font,
   double x,
   double y,
   std::string_view utf8,
   double pixel_height,
-  Rgba colour,
+  imaging::Rgba colour,
   Anchor anchor)
 {
   return font.draw(image, x, y, utf8, pixel_height, colour, anchor);

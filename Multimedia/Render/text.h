@@ -4,7 +4,7 @@
 // crisp), with kerning where the font has it.
 #pragma once
 
-#include "Render/image.h"
+#include "Imaging/image.h"
 
 #include <memory>
 #include <optional>
@@ -86,12 +86,12 @@ public:
   TextLayout layout(double x, double y, std::string_view utf8, double pixel_height, Anchor anchor);
 
   /// Draw it over `image` in `colour` (linear, straight alpha). Returns the layout.
-  TextLayout draw(Image& image,
+  TextLayout draw(imaging::Image& image,
     double x,
     double y,
     std::string_view utf8,
     double pixel_height,
-    Rgba colour,
+    imaging::Rgba colour,
     Anchor anchor);
 
   struct Impl;
@@ -120,13 +120,13 @@ struct TextExtent
 TextExtent text_extent(Font& font, std::string_view utf8, double pixel_height);
 
 /// Free-function spelling of Font::draw.
-TextLayout draw_text(Image& image,
+TextLayout draw_text(imaging::Image& image,
   Font& font,
   double x,
   double y,
   std::string_view utf8,
   double pixel_height,
-  Rgba colour,
+  imaging::Rgba colour,
   Anchor anchor = {});
 
 } // namespace frep::render

@@ -73,8 +73,8 @@ OwnedMesh floor_board(const raycast::Floor& f)
 
 OwnedMesh floor_shadow(const raycast::Floor& f,
   const mesh::Surface& surface,
-  const render::Camera& camera,
-  const render::RenderStyle& style)
+  const imaging::Camera& camera,
+  const imaging::RenderStyle& style)
 {
   OwnedMesh m;
   if (style.lights.empty() || surface.dimension != 3)
@@ -82,7 +82,7 @@ OwnedMesh floor_shadow(const raycast::Floor& f,
     return m;
   }
   // The key light in world space (camera coordinates: x right, y up, z towards the camera).
-  const render::CameraFrame frame = render::camera_frame(camera);
+  const imaging::CameraFrame frame = imaging::camera_frame(camera);
   const auto& d = style.lights.front().direction;
   std::array<double, 3> l;
   for (int k = 0; k < 3; ++k)

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "Raycast/raycast.h"
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 
 #include "Mesh/surface.h"
@@ -33,7 +33,7 @@ OwnedMesh floor_board(const raycast::Floor& floor);
 /// `camera`, a hair above the board. Empty when the light does not come from above.
 OwnedMesh floor_shadow(const raycast::Floor& floor,
   const mesh::Surface& surface,
-  const render::Camera& camera,
-  const render::RenderStyle& style);
+  const imaging::Camera& camera,
+  const imaging::RenderStyle& style);
 
 } // namespace frep::mapping

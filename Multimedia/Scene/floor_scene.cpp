@@ -107,7 +107,7 @@ FloorScene make_floor_scene(const Plan& plan,
   // The camera sees the board and each frame's shape where it stands (its solid's box when the
   // framing has it, else the shape's box; not one box over the whole board, which leaves the sky
   // over the board's far corners empty).
-  std::vector<render::Vec3> seen;
+  std::vector<imaging::Vec3> seen;
   for (int c = 0; c < 4; ++c)
   {
     seen.push_back({ f.origin[0] + (c & 1 ? columns * world_square : 0.0),
@@ -135,11 +135,11 @@ FloorScene make_floor_scene(const Plan& plan,
         f.height + (c & 4 ? b[2].hi - b[2].lo : 0.0) });
     }
   }
-  render::FitOptions fit;
+  imaging::FitOptions fit;
   fit.fill = 0.92;
   fit.free_bottom = caption_band(spec.render.height); // the frames' caption
   scene.camera =
-    render::fit_points(seen, aspect, settings.azimuth, std::max(settings.elevation, 30.0), fit);
+    imaging::fit_points(seen, aspect, settings.azimuth, std::max(settings.elevation, 30.0), fit);
   return scene;
 }
 

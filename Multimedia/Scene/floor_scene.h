@@ -15,7 +15,7 @@
 #include "Scene/section_mesh.h"
 
 #include "Raycast/raycast.h"
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include <array>
 
@@ -25,7 +25,7 @@ namespace frep::mapping
 struct FloorScene
 {
   raycast::Floor floor;
-  render::Camera camera;
+  imaging::Camera camera;
   /// Dynamic-plane point (u, v) -> world floor point: x = ox + sx u, y = oy + sy v.
   std::array<double, 4> plane_to_floor{ 0.0, 1.0, 0.0, 1.0 }; ///< ox, sx, oy, sy
   std::array<double, 3> shape_anchor{}; ///< world point of the shape box put on the floor point

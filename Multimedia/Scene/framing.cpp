@@ -46,18 +46,18 @@ struct Seen
   Box view;  // its extent along the view's right, up and forward
 };
 
-Box extent_in(const render::CameraFrame& view,
-  const std::vector<render::Vec3>& points,
+Box extent_in(const imaging::CameraFrame& view,
+  const std::vector<imaging::Vec3>& points,
   double widen)
 {
   Box e;
-  const std::array<const render::Vec3*, 3> axes{ &view.right, &view.up, &view.forward };
+  const std::array<const imaging::Vec3*, 3> axes{ &view.right, &view.up, &view.forward };
   for (std::size_t k = 0; k < 3; ++k)
   {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const render::Vec3& p : points)
+    for (const imaging::Vec3& p : points)
     {
-      const render::Vec3& a = *axes[k];
+      const imaging::Vec3& a = *axes[k];
       const double v = a[0] * p[0] + a[1] * p[1] + a[2] * p[2];
       lo = std::min(lo, v);
       hi = std::max(hi, v);
@@ -68,9 +68,9 @@ Box extent_in(const render::CameraFrame& view,
   return e;
 }
 
-std::vector<render::Vec3> corners_of(const Box& b)
+std::vector<imaging::Vec3> corners_of(const Box& b)
 {
-  std::vector<render::Vec3> corners(8);
+  std::vector<imaging::Vec3> corners(8);
   for (int c = 0; c < 8; ++c)
   {
     corners[static_cast<std::size_t>(c)] = {
@@ -82,13 +82,13 @@ std::vector<render::Vec3> corners_of(const Box& b)
 
 // Points on the faces of the model box (17 per edge; flat in z for 2 axes) in world space,
 // moved by the transform: the outline of the box's image, bent or not.
-std::vector<render::Vec3> image_of(const WorldMapping& world,
+std::vector<imaging::Vec3> image_of(const WorldMapping& world,
   const Box& box,
   const std::array<double, 16>& m,
   int axes)
 {
   constexpr int n = 17;
-  std::vector<render::Vec3> points;
+  std::vector<imaging::Vec3> points;
   const int nz = axes == 3 ? n : 1;
   for (int k = 0; k < nz; ++k)
   {
@@ -119,7 +119,7 @@ std::optional<Seen> see(const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
   const WorldMapping& world,
-  const render::CameraFrame* view,
+  const imaging::CameraFrame* view,
   const Sample& sample)
 {
   const int axes = plan.world_coordinates[2] >= 0 ? 3 : 2;
@@ -219,7 +219,7 @@ Framing frame_solids(const RenderSettings& settings,
   {
     samples.push_back(&s);
   }
-  const render::CameraFrame view = render::view_frame(settings.azimuth, settings.elevation);
+  const imaging::CameraFrame view = imaging::view_frame(settings.azimuth, settings.elevation);
   std::vector<std::optional<Seen>> seen(samples.size());
   const auto look = [&](std::size_t i, int)
   { seen[i] = see(model, parameters, plan, *world, &view, *samples[i]); };
@@ -252,7 +252,7 @@ Framing frame_solids(const RenderSettings& settings,
   }
   if (across)
   {
-    for (const render::Vec3& c : corners_of(*across)) // view coordinates -> world
+    for (const imaging::Vec3& c : corners_of(*across)) // view coordinates -> world
     {
       framing.outline.push_back({ c[0] * view.right[0] + c[1] * view.up[0] + c[2] * view.forward[0],
         c[0] * view.right[1] + c[1] * view.up[1] + c[2] * view.forward[1],

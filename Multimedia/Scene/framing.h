@@ -12,7 +12,7 @@
 #include "Plan/mapping_plan.h"
 #include "Plan/mapping_spec.h"
 
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include "Compiler/model.h"
 
@@ -38,10 +38,10 @@ struct Framing
   /// Eight world points whose outline, seen from the settings' azimuth and elevation, holds the
   /// outline of every sample's solid: the corners of the union of their extents across and
   /// along the view (of the silhouette's points when the plan can be ray-cast, widened by the
-  /// rays' spacing; else of the solid's world box). What plan_camera fits (render::fit_points):
+  /// rays' spacing; else of the solid's world box). What plan_camera fits (imaging::fit_points):
   /// a round shape fills the picture where its box's corners seen obliquely would leave it
   /// about half as wide.
-  std::vector<render::Vec3> outline;
+  std::vector<imaging::Vec3> outline;
   /// Each frame's solid's world box (plan.frames' order; empty: no solid): where the floor
   /// scene's camera must see a shape standing on the board.
   std::vector<std::optional<std::array<Interval, 3>>> frames;

@@ -14,16 +14,16 @@ namespace frep::mapping
 namespace
 {
 
-render::Rgba to_rgba(const std::array<double, 3>& srgb_colour, double alpha = 1.0)
+imaging::Rgba to_rgba(const std::array<double, 3>& srgb_colour, double alpha = 1.0)
 {
-  return render::srgb(srgb_colour[0], srgb_colour[1], srgb_colour[2], alpha);
+  return imaging::srgb(srgb_colour[0], srgb_colour[1], srgb_colour[2], alpha);
 }
 
 // Dark text on a light background, light text on a dark one.
-render::Rgba text_colour_on(const std::array<double, 3>& background)
+imaging::Rgba text_colour_on(const std::array<double, 3>& background)
 {
   const double luminance = 0.2126 * background[0] + 0.7152 * background[1] + 0.0722 * background[2];
-  return luminance > 0.5 ? render::srgb_hex(0x222222) : render::srgb_hex(0xeeeeee);
+  return luminance > 0.5 ? imaging::srgb_hex(0x222222) : imaging::srgb_hex(0xeeeeee);
 }
 
 render::Font* font_of(PictureKit* kit)
@@ -32,7 +32,7 @@ render::Font* font_of(PictureKit* kit)
 }
 
 // A 2-D section (segments in z = 0): the shown box's x/y fitted into the picture.
-void draw_contour(render::Image& image,
+void draw_contour(imaging::Image& image,
   const std::array<Interval, 3>& box,
   const Section& section,
   const Sample& sample)
@@ -43,7 +43,7 @@ void draw_contour(render::Image& image,
   const double ox = 0.5 * image.width - scale * 0.5 * (box[0].lo + box[0].hi);
   const double oy = 0.5 * image.height + scale * 0.5 * (box[1].lo + box[1].hi);
   const auto& s = section.surface;
-  const render::Rgba colour = to_rgba(sample.colour, sample.opacity);
+  const imaging::Rgba colour = to_rgba(sample.colour, sample.opacity);
   const double width = std::max(1.5, image.height / 200.0);
   for (std::size_t c = 0; c + 1 < s.cells.size(); c += 2)
   {
@@ -66,29 +66,29 @@ double caption_lift(int height)
 }
 
 // The camera of plan_camera and frame_camera, `band` of the height kept free at the bottom.
-render::Camera fitted(const Plan& plan,
+imaging::Camera fitted(const Plan& plan,
   const RenderSettings& settings,
   double aspect,
   const Framing& framing,
   double band)
 {
-  render::FitOptions fit;
+  imaging::FitOptions fit;
   fit.fill = 0.92;
   fit.free_bottom = band;
   if (!settings.view_box && !framing.outline.empty())
   {
-    return render::fit_points(framing.outline, aspect, settings.azimuth, settings.elevation, fit);
+    return imaging::fit_points(framing.outline, aspect, settings.azimuth, settings.elevation, fit);
   }
   // The box's eight corners, not its bounding sphere (up to sqrt(3) wider), fill the picture.
   const std::array<Interval, 3> box = shown_box(plan, settings);
-  std::array<render::Vec3, 8> corners;
+  std::array<imaging::Vec3, 8> corners;
   for (int c = 0; c < 8; ++c)
   {
     corners[c] = {
       c & 1 ? box[0].hi : box[0].lo, c & 2 ? box[1].hi : box[1].lo, c & 4 ? box[2].hi : box[2].lo
     };
   }
-  return render::fit_points(corners, aspect, settings.azimuth, settings.elevation, fit);
+  return imaging::fit_points(corners, aspect, settings.azimuth, settings.elevation, fit);
 }
 
 std::string format_time(double t)
@@ -113,7 +113,7 @@ PictureKit::PictureKit()
   }
 }
 
-render::Camera plan_camera(const Plan& plan,
+imaging::Camera plan_camera(const Plan& plan,
   const RenderSettings& settings,
   double aspect,
   const Framing& framing)
@@ -128,7 +128,7 @@ double caption_band(int height)
                     : 0.0;
 }
 
-render::Camera frame_camera(const Plan& plan,
+imaging::Camera frame_camera(const Plan& plan,
   const RenderSettings& settings,
   int width,
   int height,
@@ -138,27 +138,27 @@ render::Camera frame_camera(const Plan& plan,
   return fitted(plan, settings, aspect, framing, caption_band(height));
 }
 
-render::Camera box_camera(const std::array<double, 3>& lo,
+imaging::Camera box_camera(const std::array<double, 3>& lo,
   const std::array<double, 3>& hi,
   double aspect,
   double azimuth,
   double elevation)
 {
   // The eight corners, not the box's bounding sphere (up to sqrt(3) wider), fill the picture.
-  std::array<render::Vec3, 8> corners;
+  std::array<imaging::Vec3, 8> corners;
   for (int c = 0; c < 8; ++c)
   {
     corners[c] = { c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
   }
-  render::FitOptions fit;
+  imaging::FitOptions fit;
   fit.fill = 0.92;
-  return render::fit_points(corners, aspect, azimuth, elevation, fit);
+  return imaging::fit_points(corners, aspect, azimuth, elevation, fit);
 }
 
-render::Image render_sample(const Plan& plan,
+imaging::Image render_sample(const Plan& plan,
   const Section& section,
   const Sample& sample,
-  const render::Camera& camera,
+  const imaging::Camera& camera,
   int width,
   int height,
   const RenderSettings& settings,
@@ -166,7 +166,7 @@ render::Image render_sample(const Plan& plan,
   const raycast::Floor* floor,
   const Framing& framing)
 {
-  render::Image image(width, height, to_rgba(sample.background));
+  imaging::Image image(width, height, to_rgba(sample.background));
   const mesh::Surface& s = section.surface;
   if (s.cells.empty() && !floor)
   {
@@ -185,9 +185,9 @@ render::Image render_sample(const Plan& plan,
     std::transform(section.colours.begin(),
       section.colours.end(),
       linear.begin(),
-      [](float c) { return render::srgb_to_linear(c); });
+      [](float c) { return imaging::srgb_to_linear(c); });
   }
-  render::RenderStyle style;
+  imaging::RenderStyle style;
   style.threads = threads;
   style.supersample = std::max(width, height) <= 400 ? 3 : 2;
   for (auto& light : style.lights)
@@ -200,7 +200,7 @@ render::Image render_sample(const Plan& plan,
   mesh.triangles = s.cells;
   mesh.normals = s.normals;
   mesh.colours = linear;
-  const render::Rgba c = to_rgba(sample.colour);
+  const imaging::Rgba c = to_rgba(sample.colour);
   mesh.colour = { c.r, c.g, c.b };
   mesh.opacity = sample.opacity;
   if (!floor)
@@ -227,8 +227,8 @@ render::Image render_sample(const Plan& plan,
   return image;
 }
 
-render::Image compose_spreadsheet(const Plan& plan,
-  const std::vector<render::Image>& cells,
+imaging::Image compose_spreadsheet(const Plan& plan,
+  const std::vector<imaging::Image>& cells,
   const Spec& spec,
   PictureKit* kit,
   std::vector<std::array<int, 4>>* rects)
@@ -253,10 +253,10 @@ render::Image compose_spreadsheet(const Plan& plan,
   const int width = 2 * margin + layers * block_w + (layers - 1) * 3 * gap;
   const int height = 2 * margin + title_h + rows * (cell + label_h) + (rows - 1) * gap;
   const std::array<double, 3>& bg = spec.render.background;
-  render::Image sheet(width, height, to_rgba(bg));
-  const render::Rgba ink = text_colour_on(bg);
-  const render::Rgba border =
-    render::srgb(0.5 * bg[0] + 0.25, 0.5 * bg[1] + 0.25, 0.5 * bg[2] + 0.25);
+  imaging::Image sheet(width, height, to_rgba(bg));
+  const imaging::Rgba ink = text_colour_on(bg);
+  const imaging::Rgba border =
+    imaging::srgb(0.5 * bg[0] + 0.25, 0.5 * bg[1] + 0.25, 0.5 * bg[2] + 0.25);
 
   if (labels)
   {
@@ -283,7 +283,7 @@ render::Image compose_spreadsheet(const Plan& plan,
     const int c = std::max(0, s.cell[0]), r = std::max(0, s.cell[1]), l = std::max(0, s.cell[2]);
     const int x = margin + l * (block_w + 3 * gap) + c * (cell + gap);
     const int y = margin + title_h + r * (cell + label_h + gap);
-    render::composite_over(sheet, cells[i], x, y);
+    imaging::composite_over(sheet, cells[i], x, y);
     if (rects)
     {
       rects->push_back({ x, y, cells[i].width, cells[i].height });
@@ -303,7 +303,7 @@ render::Image compose_spreadsheet(const Plan& plan,
   return sheet;
 }
 
-void decorate_frame(render::Image& frame,
+void decorate_frame(imaging::Image& frame,
   const Plan& plan,
   const Sample& sample,
   const RenderSettings& settings,
@@ -352,9 +352,9 @@ void decorate_frame(render::Image& frame,
   render::draw_checkerboard_inset(frame, inset, font);
 }
 
-render::Image path_picture(const Plan& plan, int size, PictureKit* kit)
+imaging::Image path_picture(const Plan& plan, int size, PictureKit* kit)
 {
-  render::Image picture(size, size, render::srgb(1, 1, 1));
+  imaging::Image picture(size, size, imaging::srgb(1, 1, 1));
   if (plan.dynamic_coordinates.size() != 2)
   {
     return picture;
@@ -379,7 +379,7 @@ render::Image path_picture(const Plan& plan, int size, PictureKit* kit)
   }
   inset.u_label = plan.dynamic_coordinates[0];
   inset.v_label = plan.dynamic_coordinates[1];
-  inset.background = render::srgb(1, 1, 1);
+  inset.background = imaging::srgb(1, 1, 1);
   render::draw_checkerboard_inset(picture, inset, font_of(kit));
   return picture;
 }

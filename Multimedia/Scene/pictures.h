@@ -12,8 +12,8 @@
 
 #include "Raycast/raycast.h"
 
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
 #include "Render/text.h"
 
 #include <memory>
@@ -36,9 +36,9 @@ struct PictureKit
 /// The camera for every cell and frame of the plan, seen from the settings' azimuth and
 /// elevation for the aspect ratio width / height: the settings' view_box when they have one
 /// (box_camera); else the framing's outline, the solids seen from that direction (frame_solids,
-/// Scene/framing.h), within 92% of the picture's width or height (render::fit_points); else,
+/// Scene/framing.h), within 92% of the picture's width or height (imaging::fit_points); else,
 /// with an empty framing, the plan's world box (box_camera).
-render::Camera plan_camera(const Plan& plan,
+imaging::Camera plan_camera(const Plan& plan,
   const RenderSettings& settings,
   double aspect,
   const Framing& framing = {});
@@ -49,17 +49,17 @@ double caption_band(int height);
 /// The camera of the animation frames of width x height pixels (the page scene): plan_camera's
 /// with the caption's band at the bottom kept free (caption_band), so the shape stays clear of
 /// it.
-render::Camera frame_camera(const Plan& plan,
+imaging::Camera frame_camera(const Plan& plan,
   const RenderSettings& settings,
   int width,
   int height,
   const Framing& framing = {});
 
-/// A camera that sees the box [lo, hi] from (azimuth, elevation) (render::fit_box's angles) with
+/// A camera that sees the box [lo, hi] from (azimuth, elevation) (imaging::fit_box's angles) with
 /// its eight corners filling 92% of the picture of width / height = aspect, along its width or
 /// its height, whichever the box reaches first (tighter than fit_box's fit_corners, which keeps
 /// them in the circle of the shorter side).
-render::Camera box_camera(const std::array<double, 3>& lo,
+imaging::Camera box_camera(const std::array<double, 3>& lo,
   const std::array<double, 3>& hi,
   double aspect,
   double azimuth,
@@ -70,10 +70,10 @@ render::Camera box_camera(const std::array<double, 3>& lo,
 /// from +z, fitted to the shown box (shown_box: the settings' view_box, else the framing's box,
 /// else the world box). `threads` 0 = all cores. With `floor` (the floor scene, floor_scene.h),
 /// the checkerboard, the path and the section's shadow are drawn with it.
-render::Image render_sample(const Plan& plan,
+imaging::Image render_sample(const Plan& plan,
   const Section& section,
   const Sample& sample,
-  const render::Camera& camera,
+  const imaging::Camera& camera,
   int width,
   int height,
   const RenderSettings& settings,
@@ -85,15 +85,15 @@ render::Image render_sample(const Plan& plan,
 /// with gaps, each labelled with its coordinate values, the grid coordinates named along the
 /// top and left edges. Layers (a third grid axis) are stacked as blocks left to right.
 /// `rects`, when given, receives each cell picture's place (x, y, width, height in pixels).
-render::Image compose_spreadsheet(const Plan& plan,
-  const std::vector<render::Image>& cells,
+imaging::Image compose_spreadsheet(const Plan& plan,
+  const std::vector<imaging::Image>& cells,
   const Spec& spec,
   PictureKit* kit,
   std::vector<std::array<int, 4>>* rects = nullptr);
 
 /// Draws the frame's caption (its time and coordinate values) and, when the settings ask for
 /// it and there are two dynamic coordinates, the inset of the dynamic plane in a corner.
-void decorate_frame(render::Image& frame,
+void decorate_frame(imaging::Image& frame,
   const Plan& plan,
   const Sample& sample,
   const RenderSettings& settings,
@@ -101,6 +101,6 @@ void decorate_frame(render::Image& frame,
 
 /// The plane of the two dynamic coordinates with the path and every frame's point marked,
 /// `size` pixels square.
-render::Image path_picture(const Plan& plan, int size, PictureKit* kit);
+imaging::Image path_picture(const Plan& plan, int size, PictureKit* kit);
 
 } // namespace frep::mapping

@@ -54,15 +54,15 @@ RaycastPicture raycast_sample(const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
   const Sample& sample,
-  const render::Camera& camera,
+  const imaging::Camera& camera,
   int width,
   int height,
   const RaycastOptions& options)
 {
   RaycastPicture picture;
-  picture.image = render::Image(width,
+  picture.image = imaging::Image(width,
     height,
-    render::srgb(sample.background[0], sample.background[1], sample.background[2]));
+    imaging::srgb(sample.background[0], sample.background[1], sample.background[2]));
   std::string why;
   if (!raycast_supported(plan, &why))
   {
@@ -91,7 +91,7 @@ RaycastPicture raycast_sample(const Model& model,
     shape.box[k] = frep::Interval{ plan.model_box[k].lo, plan.model_box[k].hi };
   }
   shape.to_world = raycast_world_map(plan, sample);
-  const render::Rgba c = render::srgb(sample.colour[0], sample.colour[1], sample.colour[2]);
+  const imaging::Rgba c = imaging::srgb(sample.colour[0], sample.colour[1], sample.colour[2]);
   shape.colour = { c.r, c.g, c.b };
   shape.opacity = std::clamp(sample.opacity, 0.0, 1.0);
 
@@ -128,9 +128,9 @@ RaycastPicture raycast_sample(const Model& model,
       {
         rgb = *mapped;
       }
-      return std::array<float, 3>{ render::srgb_to_linear(static_cast<float>(rgb[0])),
-        render::srgb_to_linear(static_cast<float>(rgb[1])),
-        render::srgb_to_linear(static_cast<float>(rgb[2])) };
+      return std::array<float, 3>{ imaging::srgb_to_linear(static_cast<float>(rgb[0])),
+        imaging::srgb_to_linear(static_cast<float>(rgb[1])),
+        imaging::srgb_to_linear(static_cast<float>(rgb[2])) };
     };
   }
   else if (vc.source == VertexColouring::Source::Attributes && shape.tape->outputs.size() > 1)

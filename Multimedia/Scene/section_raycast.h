@@ -8,8 +8,8 @@
 #include "Plan/mapping_plan.h"
 
 #include "Raycast/raycast.h"
-#include "Render/camera.h"
-#include "Render/image.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
 
 #include "Compiler/model.h"
 
@@ -38,7 +38,7 @@ struct RaycastOptions : RunControl
 
 struct RaycastPicture
 {
-  render::Image image;
+  imaging::Image image;
   raycast::Statistics statistics;
   std::string error; ///< non-empty: nothing drawn ("cancelled" when cancelled)
   bool ok() const { return error.empty(); }
@@ -50,7 +50,7 @@ RaycastPicture raycast_sample(const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
   const Sample& sample,
-  const render::Camera& camera,
+  const imaging::Camera& camera,
   int width,
   int height,
   const RaycastOptions& options = {});

@@ -45,7 +45,7 @@ struct Shading
   float back_face_factor = 0.8F;
   bool integer_shininess = true;
 
-  Shading(const RenderStyle& style);
+  Shading(const imaging::RenderStyle& style);
 };
 
 /// The shaded linear colour (clamped to [0, 1]) of triangle t at sample (sx, sy) (its centre).

@@ -2,7 +2,7 @@
 // space, clipped, projected to the supersampled picture and snapped to fixed point.
 #pragma once
 
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 
 #include <cstdint>
@@ -20,8 +20,8 @@ constexpr std::int64_t kSubpixel = std::int64_t{ 1 } << kSubpixelBits;
 /// Camera space here: x right, y up, z forward (depth, > 0 in front of the eye).
 struct Projection
 {
-  CameraFrame frame;
-  Vec3 eye;
+  imaging::CameraFrame frame;
+  imaging::Vec3 eye;
   bool orthographic = false;
   double focal = 1.0; ///< samples per unit of x/z (perspective) or of x (orthographic)
   double cx = 0.0;    ///< the view centre, in samples
@@ -30,7 +30,7 @@ struct Projection
   int width = 0; ///< samples
   int height = 0;
 
-  Projection(const Camera& camera, int sample_width, int sample_height);
+  Projection(const imaging::Camera& camera, int sample_width, int sample_height);
 };
 
 struct SetupVertex

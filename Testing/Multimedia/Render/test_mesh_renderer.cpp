@@ -1,6 +1,6 @@
 // The mesh renderer: coverage against the analytic projection, shading, clipping, the depth
 // buffer, transparency, determinism across thread counts, and bad input that must not crash.
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 #include "test_meshes.h"
 
@@ -27,7 +27,7 @@ MeshInput input_of(const TestMesh& m)
   return in;
 }
 
-double alpha_sum(const Image& image)
+double alpha_sum(const imaging::Image& image)
 {
   double sum = 0.0;
   for (std::size_t i = 3; i < image.rgba.size(); i += 4)
@@ -37,21 +37,21 @@ double alpha_sum(const Image& image)
   return sum;
 }
 
-double luminance(const Image& image, int x, int y)
+double luminance(const imaging::Image& image, int x, int y)
 {
-  const Rgba c = image.at(x, y);
+  const imaging::Rgba c = image.at(x, y);
   return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
 }
 
 // The projected radius (pixels) of a sphere of radius r whose centre is on the view axis at
 // distance d: its outline subtends asin(r / d).
-double projected_radius(const Camera& camera, int height, double r, double d)
+double projected_radius(const imaging::Camera& camera, int height, double r, double d)
 {
   const double f = 0.5 * height / std::tan(0.5 * camera.view_angle_deg * std::numbers::pi / 180.0);
   return f * std::tan(std::asin(r / d));
 }
 
-double distance(const Vec3& a, const Vec3& b)
+double distance(const imaging::Vec3& a, const imaging::Vec3& b)
 {
   return std::sqrt(
     (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -62,9 +62,10 @@ TEST(MeshRenderer, SphereCoversItsProjectedDisc)
   const TestMesh sphere = uv_sphere(160, 80);
   for (const int supersample : { 1, 2, 3 })
   {
-    Image image(320, 240);
-    const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 320.0 / 240.0, 30.0, 20.0);
-    RenderStyle style;
+    imaging::Image image(320, 240);
+    const imaging::Camera camera =
+      imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 320.0 / 240.0, 30.0, 20.0);
+    imaging::RenderStyle style;
     style.supersample = supersample;
     const RenderReport report = render_mesh(image, camera, input_of(sphere), style);
     ASSERT_TRUE(report.ok()) << report.error;
@@ -91,10 +92,11 @@ TEST(MeshRenderer, SphereCoversItsProjectedDisc)
 TEST(MeshRenderer, OrthographicSphereArea)
 {
   const TestMesh sphere = uv_sphere(160, 80);
-  Image image(300, 200);
-  FitOptions fit;
+  imaging::Image image(300, 200);
+  imaging::FitOptions fit;
   fit.orthographic = true;
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.5, -40.0, 35.0, fit);
+  const imaging::Camera camera =
+    imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.5, -40.0, 35.0, fit);
   ASSERT_TRUE(render_mesh(image, camera, input_of(sphere)).ok());
   const double r = 1.0 / camera.parallel_scale * 100.0; // world units -> pixels
   EXPECT_NEAR(alpha_sum(image) / (std::numbers::pi * r * r), 1.0, 0.015);
@@ -103,8 +105,8 @@ TEST(MeshRenderer, OrthographicSphereArea)
 TEST(MeshRenderer, SphereCentreIsBrighterThanItsLimb)
 {
   const TestMesh sphere = uv_sphere(96, 48);
-  Image image(200, 200);
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 0.0, 0.0);
+  imaging::Image image(200, 200);
+  const imaging::Camera camera = imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 0.0, 0.0);
   ASSERT_TRUE(render_mesh(image, camera, input_of(sphere)).ok());
   const double r =
     projected_radius(camera, 200, 1.0, distance(camera.position, camera.focal_point));
@@ -139,8 +141,8 @@ TEST(MeshRenderer, NoNormalsGivesSmoothShadingToo)
   const TestMesh with = uv_sphere(96, 48);
   TestMesh without = with;
   without.normals.clear();
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 10.0, 10.0);
-  Image a(160, 160), b(160, 160);
+  const imaging::Camera camera = imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 10.0, 10.0);
+  imaging::Image a(160, 160), b(160, 160);
   ASSERT_TRUE(render_mesh(a, camera, input_of(with)).ok());
   ASSERT_TRUE(render_mesh(b, camera, input_of(without)).ok());
   double worst = 0;
@@ -153,13 +155,13 @@ TEST(MeshRenderer, NoNormalsGivesSmoothShadingToo)
 
 TEST(MeshRenderer, TriangleBehindTheCameraDrawsNothing)
 {
-  Camera camera; // at (0, -5, 0) looking along +y
+  imaging::Camera camera; // at (0, -5, 0) looking along +y
   MeshInput in;
   const std::vector<double> behind = { -1, -8, -1, 1, -8, -1, 0, -8, 1 };
   const std::vector<std::uint32_t> tri = { 0, 1, 2 };
   in.points = behind;
   in.triangles = tri;
-  Image image(64, 64);
+  imaging::Image image(64, 64);
   const RenderReport report = render_mesh(image, camera, in);
   EXPECT_TRUE(report.ok());
   EXPECT_EQ(alpha_sum(image), 0.0);
@@ -167,7 +169,7 @@ TEST(MeshRenderer, TriangleBehindTheCameraDrawsNothing)
   // One crossing the eye's plane: clipped, what is in front is drawn, no crash.
   const std::vector<double> crossing = { -1, -8, -0.2, 1, -8, -0.2, 0, 3, 0.2 };
   in.points = crossing;
-  Image clipped(64, 64);
+  imaging::Image clipped(64, 64);
   const RenderReport r2 = render_mesh(clipped, camera, in);
   EXPECT_TRUE(r2.ok());
   EXPECT_EQ(r2.triangles_clipped, 1U);
@@ -176,13 +178,13 @@ TEST(MeshRenderer, TriangleBehindTheCameraDrawsNothing)
 
 TEST(MeshRenderer, DepthBufferHidesTheFartherSquare)
 {
-  const Camera camera; // looks along +y from y = -5
+  const imaging::Camera camera; // looks along +y from y = -5
   const TestMesh red = test::square_y(0.0, 0.0, 0.0, 0.5);
   const TestMesh blue = test::square_y(1.0, 0.4, 0.0, 0.8); // bigger, farther, to the right
   for (const bool red_first : { true, false })
   {
-    Image image(120, 120, { 0, 0, 0, 1 });
-    RenderStyle matte; // no white highlight: colours stay pure
+    imaging::Image image(120, 120, { 0, 0, 0, 1 });
+    imaging::RenderStyle matte; // no white highlight: colours stay pure
     matte.specular = 0.0;
     Renderer renderer(120, 120, camera, matte);
     MeshInput r = input_of(red), b = input_of(blue);
@@ -199,11 +201,11 @@ TEST(MeshRenderer, DepthBufferHidesTheFartherSquare)
       renderer.add(r);
     }
     ASSERT_EQ(renderer.resolve(image), "");
-    const Rgba centre = image.at(60, 60);
+    const imaging::Rgba centre = image.at(60, 60);
     EXPECT_GT(centre.r, 0.2F);
     EXPECT_EQ(centre.b, 0.0F) << "red first: " << red_first;
     // Right of the red square only the blue one is there.
-    const Rgba right = image.at(95, 60);
+    const imaging::Rgba right = image.at(95, 60);
     EXPECT_GT(right.b, 0.2F);
     EXPECT_EQ(right.r, 0.0F);
   }
@@ -211,27 +213,27 @@ TEST(MeshRenderer, DepthBufferHidesTheFartherSquare)
 
 TEST(MeshRenderer, TransparentMeshBlendsOverOpaqueOnly)
 {
-  const Camera camera;
+  const imaging::Camera camera;
   const TestMesh front = test::square_y(0.0, 0.0, 0.0, 0.5);
   const TestMesh back = test::square_y(1.0, 0.0, 0.0, 0.5);
   MeshInput f = input_of(front), b = input_of(back);
   f.colour = { 1, 0, 0 };
   f.opacity = 0.5;
   b.colour = { 0, 0, 1 };
-  Image image(100, 100, { 0, 0, 0, 1 });
+  imaging::Image image(100, 100, { 0, 0, 0, 1 });
   Renderer renderer(100, 100, camera);
   renderer.add(f);
   renderer.add(b);
   ASSERT_EQ(renderer.resolve(image), "");
-  const Rgba c = image.at(50, 50);
+  const imaging::Rgba c = image.at(50, 50);
   EXPECT_GT(c.r, 0.1F);
   EXPECT_GT(c.b, 0.1F);
   EXPECT_NEAR(c.r / c.b, 1.0, 0.05); // same shading, half each
   // A transparent square behind an opaque one is hidden.
   f.opacity = 1.0;
   b.opacity = 0.5;
-  Image hidden(100, 100, { 0, 0, 0, 1 });
-  RenderStyle matte;
+  imaging::Image hidden(100, 100, { 0, 0, 0, 1 });
+  imaging::RenderStyle matte;
   matte.specular = 0.0;
   Renderer r2(100, 100, camera, matte);
   r2.add(b);
@@ -244,14 +246,15 @@ TEST(MeshRenderer, SamePictureWithOneOrTwoThreads)
 {
   const TestMesh sphere = uv_sphere(200, 100, 1.0, 0, 0, 0, 0.08, false);
   const TestMesh shell = uv_sphere(64, 32, 1.4, 0.3, 0, 0);
-  const Camera camera = fit_box({ -1.5, -1.5, -1.5 }, { 1.5, 1.5, 1.5 }, 1.5, 35.0, 25.0);
-  Image pictures[2];
+  const imaging::Camera camera =
+    imaging::fit_box({ -1.5, -1.5, -1.5 }, { 1.5, 1.5, 1.5 }, 1.5, 35.0, 25.0);
+  imaging::Image pictures[2];
   for (const int threads : { 1, 2 })
   {
-    RenderStyle style;
+    imaging::RenderStyle style;
     style.threads = threads;
     style.supersample = 3;
-    Image image(240, 160, { 1, 1, 1, 1 });
+    imaging::Image image(240, 160, { 1, 1, 1, 1 });
     Renderer renderer(240, 160, camera, style);
     MeshInput a = input_of(sphere);
     a.colours = sphere.colours;
@@ -268,12 +271,12 @@ TEST(MeshRenderer, SamePictureWithOneOrTwoThreads)
 TEST(MeshRenderer, TransformMovesPointsAndNormals)
 {
   const TestMesh sphere = uv_sphere(64, 32);
-  const Camera camera; // looks along +y from y = -5; the picture's right is +x
+  const imaging::Camera camera; // looks along +y from y = -5; the picture's right is +x
   MeshInput in = input_of(sphere);
   // Scale by 0.5 and move 0.5 to the right: the disc's centroid moves right, its area shrinks
   // about 4x (perspective: (0.5 / sqrt(24.75))^2 / (1 / sqrt(24))^2 = 0.2424 on the axis).
   in.transform = std::array<double, 16>{ 0.5, 0, 0, 0.5, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1 };
-  Image moved(200, 200), plain(200, 200);
+  imaging::Image moved(200, 200), plain(200, 200);
   ASSERT_TRUE(render_mesh(moved, camera, in).ok());
   ASSERT_TRUE(render_mesh(plain, camera, input_of(sphere)).ok());
   double mx = 0, m = 0;
@@ -288,7 +291,7 @@ TEST(MeshRenderer, TransformMovesPointsAndNormals)
   EXPECT_NEAR(alpha_sum(moved) / alpha_sum(plain), 0.2424, 0.01);
   // A mirror (det < 0) keeps normals outward: the picture is still lit like a sphere.
   in.transform = std::array<double, 16>{ -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-  Image mirrored(200, 200);
+  imaging::Image mirrored(200, 200);
   ASSERT_TRUE(render_mesh(mirrored, camera, in).ok());
   EXPECT_GT(luminance(mirrored, 100, 100), luminance(mirrored, 100, 100 + 40) * 0.9);
   EXPECT_GT(luminance(mirrored, 100, 100), 0.3);
@@ -307,8 +310,8 @@ TEST(MeshRenderer, InsideOutMeshIsStillShaded)
   {
     n = -n;
   }
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 0.0, 0.0);
-  Image inverted(100, 100), normal(100, 100);
+  const imaging::Camera camera = imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 1.0, 0.0, 0.0);
+  imaging::Image inverted(100, 100), normal(100, 100);
   ASSERT_TRUE(render_mesh(inverted, camera, input_of(sphere)).ok());
   ASSERT_TRUE(render_mesh(normal, camera, input_of(uv_sphere(64, 32))).ok());
   const double li = luminance(inverted, 50, 50), ln = luminance(normal, 50, 50);
@@ -318,7 +321,7 @@ TEST(MeshRenderer, InsideOutMeshIsStillShaded)
 
 TEST(MeshRenderer, BadInputNeverCrashes)
 {
-  const Camera camera;
+  const imaging::Camera camera;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<double> points = {
@@ -331,7 +334,7 @@ TEST(MeshRenderer, BadInputNeverCrashes)
   MeshInput in;
   in.points = points;
   in.triangles = triangles;
-  Image image(50, 50);
+  imaging::Image image(50, 50);
   const RenderReport report = render_mesh(image, camera, in);
   EXPECT_TRUE(report.ok()) << report.error;
   EXPECT_EQ(report.triangles, 6U);
@@ -339,7 +342,7 @@ TEST(MeshRenderer, BadInputNeverCrashes)
   EXPECT_GT(alpha_sum(image), 10.0);
 
   // Empty meshes and a wrong-sized array: no picture change, an error for the latter.
-  Image untouched(50, 50);
+  imaging::Image untouched(50, 50);
   EXPECT_TRUE(render_mesh(untouched, camera, MeshInput{}).ok());
   const std::vector<double> ragged = { 0, 0 };
   MeshInput bad;
@@ -351,18 +354,18 @@ TEST(MeshRenderer, BadInputNeverCrashes)
   EXPECT_EQ(alpha_sum(untouched), 0.0);
 
   // A zero-sized target and a mismatched resolve.
-  Image none;
+  imaging::Image none;
   in.normals = {};
   EXPECT_TRUE(render_mesh(none, camera, in).ok());
   Renderer renderer(10, 10, camera);
-  Image wrong(11, 10);
+  imaging::Image wrong(11, 10);
   EXPECT_NE(renderer.resolve(wrong), "");
 
   // Points far beyond the view (guard band clipping) and a camera inside the mesh.
   const std::vector<double> huge = { -1e12, 1, -1e12, 1e12, 1, -1e12, 0, 1, 1e12 };
   in.points = huge;
   in.triangles = std::span<const std::uint32_t>(triangles.data(), 3);
-  Image big(64, 64);
+  imaging::Image big(64, 64);
   const RenderReport r3 = render_mesh(big, camera, in);
   EXPECT_TRUE(r3.ok());
   EXPECT_NEAR(alpha_sum(big), 64.0 * 64.0, 1.0); // it fills the view
@@ -390,10 +393,10 @@ TEST(MeshRenderer, NoCracksBetweenTriangles)
   MeshInput in;
   in.points = points;
   in.triangles = triangles;
-  const Camera camera;
-  RenderStyle style;
+  const imaging::Camera camera;
+  imaging::RenderStyle style;
   style.supersample = 1;
-  Image image(64, 64);
+  imaging::Image image(64, 64);
   ASSERT_TRUE(render_mesh(image, camera, in, style).ok());
   for (int y = 8; y < 56; ++y)
   {

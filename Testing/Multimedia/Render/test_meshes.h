@@ -1,7 +1,7 @@
 // Test helpers: meshes built in code, and pictures for a human to look at.
 #pragma once
 
-#include "Render/image.h"
+#include "Imaging/image.h"
 
 #include <cmath>
 #include <cstdint>
@@ -86,16 +86,16 @@ inline TestMesh square_y(double y0, double x, double z, double h)
 
 /// When FREPKIT_RENDER_CHECK_DIR is set, the picture goes there as <name>.ppm (convert with
 /// oiiotool to look at it). Returns the error of writing, empty when not asked or written.
-inline std::string save_picture(const Image& image,
+inline std::string save_picture(const imaging::Image& image,
   const std::string& name,
-  Rgba background = { 1, 1, 1, 1 })
+  imaging::Rgba background = { 1, 1, 1, 1 })
 {
   const char* dir = std::getenv("FREPKIT_RENDER_CHECK_DIR");
   if (!dir || !*dir)
   {
     return {};
   }
-  return write_ppm(image, std::string(dir) + "/" + name + ".ppm", background);
+  return imaging::write_ppm(image, std::string(dir) + "/" + name + ".ppm", background);
 }
 
 } // namespace frep::render::test

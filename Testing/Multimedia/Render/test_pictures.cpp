@@ -1,7 +1,7 @@
 // Pictures for a human to look at (FREPKIT_RENDER_CHECK_DIR=dir writes dir/*.ppm): a shaded
 // sphere, an animation-like frame with the path inset, the standalone path picture, and text.
 // The assertions here are only that each picture was made and has content where expected.
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 #include "Render/mesh_renderer.h"
 #include "Render/plot2d.h"
 #include "test_meshes.h"
@@ -37,21 +37,25 @@ TEST(Pictures, SphereAndFrame)
   ASSERT_TRUE(font.ok()) << font.error;
 
   const test::TestMesh smooth = test::uv_sphere(256, 128, 1.0, 0, 0, 0);
-  Image sphere(480, 360, srgb_hex(0xffffff));
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 480.0 / 360.0, 30.0, 20.0);
+  imaging::Image sphere(480, 360, imaging::srgb_hex(0xffffff));
+  const imaging::Camera camera =
+    imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 480.0 / 360.0, 30.0, 20.0);
   MeshInput in;
   in.points = smooth.points;
   in.triangles = smooth.triangles;
   in.normals = smooth.normals;
-  in.colour = { srgb_hex(0x8fb3d9).r, srgb_hex(0x8fb3d9).g, srgb_hex(0x8fb3d9).b };
+  in.colour = {
+    imaging::srgb_hex(0x8fb3d9).r, imaging::srgb_hex(0x8fb3d9).g, imaging::srgb_hex(0x8fb3d9).b
+  };
   ASSERT_TRUE(render_mesh(sphere, camera, in).ok());
   EXPECT_EQ(save_picture(sphere, "sphere"), "");
 
   // A 1280 x 720 frame: a bumpy coloured shape in a translucent shell, caption, inset.
   const test::TestMesh bumpy = test::uv_sphere(400, 200, 1.0, 0, 0, 0, 0.12, false);
   const test::TestMesh shell = test::uv_sphere(128, 64, 1.45, 0, 0, 0);
-  Image frame(1280, 720, srgb_hex(0xf7f7f5));
-  const Camera wide = fit_box({ -1.5, -1.5, -1.5 }, { 1.5, 1.5, 1.5 }, 1280.0 / 720.0, 35.0, 25.0);
+  imaging::Image frame(1280, 720, imaging::srgb_hex(0xf7f7f5));
+  const imaging::Camera wide =
+    imaging::fit_box({ -1.5, -1.5, -1.5 }, { 1.5, 1.5, 1.5 }, 1280.0 / 720.0, 35.0, 25.0);
   Renderer renderer(1280, 720, wide);
   MeshInput shape;
   shape.points = bumpy.points;
@@ -78,17 +82,18 @@ TEST(Pictures, SphereAndFrame)
     24,
     "x\xE2\x82\x84 = 0.412   x\xE2\x82\x85 = 0.773   frame 23 / 59",
     22,
-    srgb_hex(0x222222),
+    imaging::srgb_hex(0x222222),
     { HAlign::Left, VAlign::Top });
   EXPECT_EQ(save_picture(frame, "frame"), "");
   // The shape is in the middle, the inset at the bottom right.
-  EXPECT_NE(frame.at(640, 360).r, srgb_hex(0xf7f7f5).r);
+  EXPECT_NE(frame.at(640, 360).r, imaging::srgb_hex(0xf7f7f5).r);
   EXPECT_NEAR(frame.at(1280 - 24 - 120, 720 - 24 - 4).r,
-    inset.background.r * inset.background.a + srgb_hex(0xf7f7f5).r * (1 - inset.background.a),
+    inset.background.r * inset.background.a +
+      imaging::srgb_hex(0xf7f7f5).r * (1 - inset.background.a),
     0.02);
 
   // The standalone path picture: every frame's point marked.
-  Image big(800, 800, { 1, 1, 1, 1 });
+  imaging::Image big(800, 800, { 1, 1, 1, 1 });
   CheckerboardInset whole;
   whole.rect = { 0, 0, 800, 800 };
   whole.path = path;
@@ -117,15 +122,18 @@ TEST(Pictures, OpenSurfaceShowsItsInside)
   in.points = bowl.points;
   in.triangles = kept;
   in.normals = bowl.normals;
-  in.colour = { srgb_hex(0xe0b070).r, srgb_hex(0xe0b070).g, srgb_hex(0xe0b070).b };
-  Image image(480, 360, { 1, 1, 1, 1 });
-  const Camera camera = fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 480.0 / 360.0, 20.0, 55.0);
-  RenderStyle style;
+  in.colour = {
+    imaging::srgb_hex(0xe0b070).r, imaging::srgb_hex(0xe0b070).g, imaging::srgb_hex(0xe0b070).b
+  };
+  imaging::Image image(480, 360, { 1, 1, 1, 1 });
+  const imaging::Camera camera =
+    imaging::fit_box({ -1, -1, -1 }, { 1, 1, 1 }, 480.0 / 360.0, 20.0, 55.0);
+  imaging::RenderStyle style;
   style.supersample = 3;
   ASSERT_TRUE(render_mesh(image, camera, in, style).ok());
   EXPECT_EQ(save_picture(image, "open_bowl"), "");
   // The centre of the picture looks into the bowl: lit, not black.
-  const Rgba c = image.at(240, 180);
+  const imaging::Rgba c = image.at(240, 180);
   EXPECT_GT(c.r, 0.15F);
 }
 
@@ -133,8 +141,8 @@ TEST(Pictures, Text)
 {
   Font::LoadResult font = Font::load_default();
   ASSERT_TRUE(font.ok()) << font.error;
-  Image image(640, 260, { 1, 1, 1, 1 });
-  const Rgba ink = srgb_hex(0x1a1a1a);
+  imaging::Image image(640, 260, { 1, 1, 1, 1 });
+  const imaging::Rgba ink = imaging::srgb_hex(0x1a1a1a);
   double y = 16;
   for (const double px : { 11.0, 14.0, 18.0, 24.0, 36.0 })
   {
@@ -149,7 +157,7 @@ TEST(Pictures, Text)
     EXPECT_FALSE(l.ink.empty());
     y = l.box.y1 + 8;
   }
-  Image dark(640, 80, srgb_hex(0x202124));
+  imaging::Image dark(640, 80, imaging::srgb_hex(0x202124));
   font.font->draw(dark,
     320,
     40,
@@ -157,7 +165,7 @@ TEST(Pictures, Text)
     24,
     { 1, 1, 1, 1 },
     { HAlign::Centre, VAlign::Middle });
-  composite_over(image, dark, 0, 180);
+  imaging::composite_over(image, dark, 0, 180);
   EXPECT_EQ(save_picture(image, "text"), "");
 }
 

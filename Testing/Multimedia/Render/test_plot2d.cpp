@@ -12,7 +12,7 @@ namespace frep::render
 namespace
 {
 
-double alpha_sum(const Image& image)
+double alpha_sum(const imaging::Image& image)
 {
   double sum = 0.0;
   for (std::size_t i = 3; i < image.rgba.size(); i += 4)
@@ -24,13 +24,13 @@ double alpha_sum(const Image& image)
 
 TEST(Plot2d, AreasOfShapes)
 {
-  Image line(200, 100);
+  imaging::Image line(200, 100);
   const std::vector<Point2> points = { { 20.3, 50.2 }, { 120.3, 50.2 } };
   draw_polyline(line, points, 4.0, { 0, 0, 0, 1 });
   EXPECT_NEAR(alpha_sum(line), 100.0 * 4.0 + std::numbers::pi * 4.0, 6.0);
 
   // A polyline with a sharp turn: the joint is not blended twice (coverage never exceeds 1).
-  Image turn(100, 100);
+  imaging::Image turn(100, 100);
   const std::vector<Point2> zigzag = { { 10, 10 }, { 80, 50 }, { 10, 90 } };
   draw_polyline(turn, zigzag, 6.0, { 0, 0, 0, 0.5F });
   float most = 0;
@@ -40,16 +40,16 @@ TEST(Plot2d, AreasOfShapes)
   }
   EXPECT_FLOAT_EQ(most, 0.5F);
 
-  Image disc(100, 100);
+  imaging::Image disc(100, 100);
   fill_circle(disc, { 50.4, 49.7 }, 20.0, { 0, 0, 0, 1 });
   EXPECT_NEAR(alpha_sum(disc) / (std::numbers::pi * 400.0), 1.0, 0.01);
 
-  Image rect(10, 10);
+  imaging::Image rect(10, 10);
   fill_rect(rect, { 1.5, 1.5, 3.5, 2.5 }, { 0, 0, 0, 1 });
   EXPECT_NEAR(alpha_sum(rect), 2.0, 1e-6);
   EXPECT_FLOAT_EQ(rect.at(1, 1).a, 0.25F);
 
-  Image frame(20, 20);
+  imaging::Image frame(20, 20);
   stroke_rect(frame, { 0, 0, 20, 20 }, 1.0, { 0, 0, 0, 1 });
   EXPECT_NEAR(alpha_sum(frame), 76.0, 1e-6);
   EXPECT_EQ(frame.at(10, 10).a, 0.0F);
@@ -57,7 +57,7 @@ TEST(Plot2d, AreasOfShapes)
 
 TEST(Plot2d, InsetPlacesBoardPathAndMarker)
 {
-  Image image(300, 300, { 0, 0, 0, 1 });
+  imaging::Image image(300, 300, { 0, 0, 0, 1 });
   CheckerboardInset inset;
   inset.rect = { 20, 20, 260, 260 };
   inset.u_lo = -1, inset.u_hi = 1, inset.v_lo = 0, inset.v_hi = 2;
@@ -81,10 +81,10 @@ TEST(Plot2d, InsetPlacesBoardPathAndMarker)
   EXPECT_EQ(square_centre(0, 1).r, inset.light_square.r);
   EXPECT_EQ(square_centre(1, 1).r, inset.dark_square.r);
   // The marker (bottom-right square) and the path (top row) are drawn there.
-  const Rgba m = square_centre(3, 0);
+  const imaging::Rgba m = square_centre(3, 0);
   EXPECT_NEAR(m.r, inset.marker_colour.r, 1e-6);
   EXPECT_NEAR(m.b, inset.marker_colour.b, 1e-6);
-  const Rgba p = square_centre(1, 3);
+  const imaging::Rgba p = square_centre(1, 3);
   EXPECT_GT(p.b, p.r + 0.1F); // the path's blue over a light square
   // Outside the rect: untouched.
   EXPECT_EQ(image.at(10, 10).r, 0.0F);
@@ -93,7 +93,7 @@ TEST(Plot2d, InsetPlacesBoardPathAndMarker)
   // With labels the board shrinks to make room, to the left and below.
   Font::LoadResult font = Font::load_default();
   ASSERT_TRUE(font.ok()) << font.error;
-  Image labelled(300, 300);
+  imaging::Image labelled(300, 300);
   const PixelBox with = draw_checkerboard_inset(labelled, inset, &*font.font);
   EXPECT_GT(with.x0, board.x0 + 5);
   EXPECT_LT(with.y1, board.y1 - 5);

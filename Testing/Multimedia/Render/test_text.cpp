@@ -62,7 +62,7 @@ TEST_F(TextDrawing, InkStaysInsideTheReportedBox)
          Anchor{ HAlign::Right, VAlign::Top },
          Anchor{ HAlign::Left, VAlign::Bottom } })
   {
-    Image image(400, 120);
+    imaging::Image image(400, 120);
     const TextLayout l = draw_text(image, *font, 200.3, 60.6, text, 28.0, { 0, 0, 0, 1 }, anchor);
     ASSERT_FALSE(l.ink.empty());
     int inside = 0, outside = 0;
@@ -128,7 +128,7 @@ TEST_F(TextDrawing, ExtentScalesWithSizeAndLength)
   EXPECT_EQ(text_extent(*font, "", 20.0).width, 0.0);
   EXPECT_EQ(text_extent(*font, "abc", 0.0).width, 0.0);
   EXPECT_EQ(text_extent(*font, "abc", -3.0).width, 0.0);
-  Image image(10, 10);
+  imaging::Image image(10, 10);
   draw_text(image, *font, -500, -500, "off the picture", 30, { 0, 0, 0, 1 });
   for (std::size_t i = 3; i < image.rgba.size(); i += 4)
   {

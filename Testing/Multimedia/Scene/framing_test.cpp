@@ -90,7 +90,7 @@ Mapped map(const char* model, const std::string& json, int dimension = 4)
 
 // The bounding box of the pixels unlike the top-left one (the background), as fractions of the
 // picture's width and height.
-std::array<double, 2> foreground_extent(const frep::render::Image& image)
+std::array<double, 2> foreground_extent(const frep::imaging::Image& image)
 {
   const float* bg = image.pixel(0, 0);
   int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
@@ -123,7 +123,7 @@ bool fills_half(const std::array<double, 2>& extent)
 }
 
 // A cell's picture (plan_camera) or, with `frame`, an animation frame's (frame_camera).
-frep::render::Image meshed(const Mapped& m,
+frep::imaging::Image meshed(const Mapped& m,
   const mapping::Framing& framing,
   const mapping::Sample& sample,
   int width,
@@ -134,7 +134,7 @@ frep::render::Image meshed(const Mapped& m,
   const mapping::RenderSettings& rs = settings ? *settings : m.spec.render;
   const mapping::Section s = mapping::make_section(*m.model, {}, m.plan, sample);
   EXPECT_TRUE(s.ok()) << s.error;
-  const frep::render::Camera camera =
+  const frep::imaging::Camera camera =
     frame ? mapping::frame_camera(m.plan, rs, width, height, framing)
           : mapping::plan_camera(m.plan, rs, static_cast<double>(width) / height, framing);
   return mapping::render_sample(m.plan, s, sample, camera, width, height, rs, 1, nullptr, framing);
@@ -176,7 +176,7 @@ TEST(Framing, FrameSolidsUnlessTheUserGaveAViewBox)
   ASSERT_TRUE(framing.box);
   expect_near_box(*framing.box, { -1, -1, -1, 1, 1, 1 }, 0.2);
   EXPECT_EQ(framing.outline.size(), 8u);
-  for (const frep::render::Vec3& p : framing.outline) // the ball's extent across the view
+  for (const frep::imaging::Vec3& p : framing.outline) // the ball's extent across the view
   {
     EXPECT_LT(std::hypot(p[0], p[1], p[2]), 2.0);
   }
@@ -206,10 +206,10 @@ TEST(Framing, CellAndFrameShowTheBallOverHalfThePicture)
 
   // A spreadsheet cell (square, meshed) and an animation frame (160 x 120, meshed and ray-cast).
   const auto cell = foreground_extent(meshed(m, framing, m.plan.cells[1], 96, 96));
-  const frep::render::Image frame_picture =
+  const frep::imaging::Image frame_picture =
     meshed(m, framing, m.plan.frames[1], 160, 120, nullptr, true);
   const auto frame = foreground_extent(frame_picture);
-  const frep::render::Camera camera =
+  const frep::imaging::Camera camera =
     mapping::frame_camera(m.plan, m.spec.render, 160, 120, framing);
   const mapping::RaycastPicture rays =
     mapping::raycast_sample(*m.model, {}, m.plan, m.plan.frames[1], camera, 160, 120);
@@ -235,7 +235,7 @@ TEST(Framing, CellAndFrameShowTheBallOverHalfThePicture)
   EXPECT_GT(cell[1], corners[1] + 0.05); // the outline frames tighter than the box's corners
   // The frame's caption band stays free (decorate_frame writes there).
   const int band = static_cast<int>(std::ceil(mapping::caption_band(120) * 120));
-  for (const frep::render::Image* picture : { &frame_picture, &rays.image })
+  for (const frep::imaging::Image* picture : { &frame_picture, &rays.image })
   {
     for (int y = 120 - band; y < 120; ++y)
     {
@@ -256,9 +256,9 @@ TEST(Framing, TheBoxFollowsTheShapesTransform)
   const mapping::Framing framing = mapping::frame_solids(m.spec.render, *m.model, {}, m.plan);
   ASSERT_TRUE(framing.box);
   expect_near_box(*framing.box, { -1, -1, -1, 6, 1, 1 }, 0.2);
-  const frep::render::Image first = meshed(m, framing, m.plan.frames.front(), 160, 120);
-  const frep::render::Image last = meshed(m, framing, m.plan.frames.back(), 160, 120);
-  for (const frep::render::Image* picture : { &first, &last })
+  const frep::imaging::Image first = meshed(m, framing, m.plan.frames.front(), 160, 120);
+  const frep::imaging::Image last = meshed(m, framing, m.plan.frames.back(), 160, 120);
+  for (const frep::imaging::Image* picture : { &first, &last })
   {
     const auto extent = foreground_extent(*picture);
     EXPECT_GT(extent[0], 0.15);
@@ -343,7 +343,7 @@ TEST(Framing, FloorSceneBoardIsSizedByTheBallThatStandsOnIt)
   mapping::Section s = mapping::make_section(*m.model, {}, m.plan, frame);
   ASSERT_TRUE(s.ok()) << s.error;
   mapping::stand_on_floor(s, scene.floor);
-  const frep::render::Image picture = mapping::render_sample(
+  const frep::imaging::Image picture = mapping::render_sample(
     m.plan, s, frame, scene.camera, 160, 120, m.spec.render, 1, &scene.floor);
   // The ball: the pixels of its colour (linear 0.69, 0.34, 0.12 shaded: not the grey board, nor
   // the red path blended with it), well inside the picture.

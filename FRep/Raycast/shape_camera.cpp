@@ -10,9 +10,9 @@ namespace
 
 /// The same camera with its focal point moved along the view to the depth of `centre` (the
 /// silhouette's points are the solid's front): a solid symmetric about it is looked at there.
-void look_at_depth_of(render::Camera& camera, const render::Vec3& centre)
+void look_at_depth_of(imaging::Camera& camera, const imaging::Vec3& centre)
 {
-  const render::CameraFrame f = render::camera_frame(camera);
+  const imaging::CameraFrame f = imaging::camera_frame(camera);
   double along = 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -28,9 +28,9 @@ void look_at_depth_of(render::Camera& camera, const render::Vec3& centre)
 
 FramedShape frame_shape(Shape& shape, const ShapeView& view)
 {
-  render::Vec3 lo{ shape.box[0].lo, shape.box[1].lo, shape.box[2].lo };
-  render::Vec3 hi{ shape.box[0].hi, shape.box[1].hi, shape.box[2].hi };
-  std::vector<render::Vec3> outline; // what the camera must see, when it frames the solid
+  imaging::Vec3 lo{ shape.box[0].lo, shape.box[1].lo, shape.box[2].lo };
+  imaging::Vec3 hi{ shape.box[0].hi, shape.box[1].hi, shape.box[2].hi };
+  std::vector<imaging::Vec3> outline; // what the camera must see, when it frames the solid
   double spacing = 0.0;
   if (view.frame_solid)
   {
@@ -41,7 +41,7 @@ FramedShape frame_shape(Shape& shape, const ShapeView& view)
       hi[a] = shape.bounds->box[a].hi;
     }
     Silhouette seen = silhouette(shape,
-      render::view_frame(view.azimuth_deg, view.elevation_deg),
+      imaging::view_frame(view.azimuth_deg, view.elevation_deg),
       view.silhouette_pixels,
       view.threads);
     outline = std::move(seen.points);
@@ -62,12 +62,12 @@ FramedShape frame_shape(Shape& shape, const ShapeView& view)
   if (outline.empty())
   {
     framed.camera =
-      render::fit_box(lo, hi, view.aspect, view.azimuth_deg, view.elevation_deg, view.fit);
+      imaging::fit_box(lo, hi, view.aspect, view.azimuth_deg, view.elevation_deg, view.fit);
     return framed;
   }
-  framed.camera = render::fit_points(
+  framed.camera = imaging::fit_points(
     outline, view.aspect, view.azimuth_deg, view.elevation_deg, view.fit, spacing);
-  render::Vec3 centre{};
+  imaging::Vec3 centre{};
   for (int a = 0; a < 3; ++a)
   {
     centre[a] = 0.5 * (shape.bounds->box[a].lo + shape.bounds->box[a].hi);

@@ -43,7 +43,7 @@ bool normalise(Vec3& v)
   return true;
 }
 
-std::string check_input(const render::Image& target, const Shape& shape, const Floor* floor)
+std::string check_input(const imaging::Image& target, const Shape& shape, const Floor* floor)
 {
   if (target.empty())
   {
@@ -251,7 +251,7 @@ Seen shade_sample(const Context& c,
 // until 2026-12-02: on a 300 x 300 cell of Meta5D it marked 3051 pixels against 1876 at 0.3 (and
 // 1444 with no colour test at all), for a picture that looks the same (edges 2.84 s -> 1.97 s).
 constexpr float kColourEdge = 0.3F; // summed over linear R, G, B
-std::vector<std::uint32_t> edge_pixels(const render::Image& image,
+std::vector<std::uint32_t> edge_pixels(const imaging::Image& image,
   const std::vector<Seen>& seen,
   const std::vector<float>& depth,
   const detail::ViewRays& view)
@@ -308,7 +308,7 @@ std::vector<std::uint32_t> edge_pixels(const render::Image& image,
 class Frame
 {
 public:
-  Frame(const Context& c, const render::Image& target, const detail::ViewRays& pixels,
+  Frame(const Context& c, const imaging::Image& target, const detail::ViewRays& pixels,
     const detail::ViewRays& samples, const std::array<Interval, 3>& clip,
     const detail::TraceOptions& options, ThreadPool& pool, int ss, const RunControl& run)
     : c_(c)
@@ -346,7 +346,7 @@ public:
       });
   }
 
-  /// 2. Edges: supersample x supersample rays per pixel, averaged like render::downsample.
+  /// 2. Edges: supersample x supersample rays per pixel, averaged like imaging::downsample.
   /// Returns the number of edge pixels.
   std::size_t supersample_edges()
   {
@@ -399,7 +399,7 @@ public:
 
   bool cancelled() const { return cancelled_; }
   double reported() const { return reported_; }
-  render::Image& picture() { return first_; }
+  imaging::Image& picture() { return first_; }
   std::vector<float>& depth() { return first_depth_; }
 
 private:
@@ -510,7 +510,7 @@ private:
   }
 
   const Context& c_;
-  const render::Image& target_;
+  const imaging::Image& target_;
   const detail::ViewRays& pixels_;
   const detail::ViewRays& samples_;
   const std::array<Interval, 3>& clip_;
@@ -524,7 +524,7 @@ private:
   const std::thread::id caller_ = std::this_thread::get_id();
   std::atomic<std::size_t> finished_{ 0 };
   double reported_ = 0.0;
-  render::Image first_;
+  imaging::Image first_;
   std::vector<float> first_depth_;
   std::vector<Seen> seen_;
 };
@@ -563,8 +563,8 @@ Floor floor_under(std::array<double, 3>& lo, std::array<double, 3>& hi)
   return floor;
 }
 
-Result render(render::Image& target,
-  const render::Camera& camera,
+Result render(imaging::Image& target,
+  const imaging::Camera& camera,
   const Shape& shape,
   const Floor* floor,
   const Style& style,
@@ -636,7 +636,7 @@ Result render(render::Image& target,
     result.error = "cancelled";
     return result;
   }
-  render::composite_over(target, frame.picture(), 0, 0);
+  imaging::composite_over(target, frame.picture(), 0, 0);
   if (depth)
   {
     *depth = std::move(frame.depth());

@@ -1,6 +1,6 @@
 // Image: the colour conventions (linear inside, sRGB out), straight-alpha compositing and the
 // premultiplied box filter of supersampling.
-#include "Render/image.h"
+#include "Imaging/image.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <fstream>
 
-namespace frep::render
+namespace frep::imaging
 {
 namespace
 {
@@ -95,4 +95,4 @@ TEST(Image, WritePpm)
 }
 
 } // namespace
-} // namespace frep::render
+} // namespace frep::imaging

@@ -14,10 +14,10 @@ namespace frep::raycast
 
 struct ShapeView
 {
-  double azimuth_deg = 0.0;   ///< render::fit_box's directions
+  double azimuth_deg = 0.0;   ///< imaging::fit_box's directions
   double elevation_deg = 0.0;
   double aspect = 1.0;        ///< the picture's width / height
-  render::FitOptions fit;     ///< view angle, orthographic, fill
+  imaging::FitOptions fit;     ///< view angle, orthographic, fill
   /// Fit the solid's silhouette (true) or the bounding sphere of the shape's box (false).
   bool frame_solid = true;
   /// Stand the solid on a checkerboard floor (its lowest point) and frame the floor too.
@@ -28,7 +28,7 @@ struct ShapeView
 
 struct FramedShape
 {
-  render::Camera camera;
+  imaging::Camera camera;
   std::optional<Floor> floor; ///< when ShapeView::floor
 };
 

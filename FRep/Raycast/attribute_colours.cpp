@@ -1,7 +1,7 @@
 #include "Raycast/raycast.h"
 
 #include "Compiler/attribute_rgb.h"
-#include "Render/image.h"
+#include "Imaging/image.h"
 
 #include <algorithm>
 
@@ -20,8 +20,8 @@ ColourFunction attribute_colours()
       s[i] = static_cast<float>(outputs[1 + i]);
     }
     const AttributeRgb rgb = attribute_rgb(s.data(), count);
-    return std::array<float, 3>{ render::srgb_to_linear(rgb[0]), render::srgb_to_linear(rgb[1]),
-      render::srgb_to_linear(rgb[2]) };
+    return std::array<float, 3>{ imaging::srgb_to_linear(rgb[0]), imaging::srgb_to_linear(rgb[1]),
+      imaging::srgb_to_linear(rgb[2]) };
   };
 }
 

@@ -1,7 +1,8 @@
-// A float RGBA picture and the few operations the headless renderer needs on it: fill, alpha-over
-// compositing, box-filter downsampling (supersampling anti-aliasing) and 8-bit output.
+// A float RGBA picture and the few operations both renderers (the mesh renderer, the ray caster)
+// need on it: fill, alpha-over compositing, box-filter downsampling (supersampling
+// anti-aliasing) and 8-bit output.
 //
-// Colour convention (the whole of frep::render): every colour value is LINEAR light in [0, 1]
+// Colour convention (every picture of FRepKit): every colour value is LINEAR light in [0, 1]
 // (not sRGB-encoded), so shading, blending and downsampling average light correctly and edges do
 // not look too dark or too thin. Alpha is STRAIGHT (colour not multiplied by alpha). sRGB
 // encoding happens once, on output (`to_rgb8`). Colours picked as sRGB values (a palette, a
@@ -12,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace frep::render
+namespace frep::imaging
 {
 
 /// A linear-light colour with straight alpha.
@@ -80,4 +81,4 @@ std::string write_ppm(const Image& image,
   const std::string& path,
   Rgba background = { 0, 0, 0, 1 });
 
-} // namespace frep::render
+} // namespace frep::imaging

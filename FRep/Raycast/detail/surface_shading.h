@@ -1,5 +1,5 @@
 // Internal: the colour of a ray-cast sample — Blinn-Phong under the mesh renderer's camera-fixed
-// light kit (Render/mesh_renderer.h: Light, RenderStyle), so that a ray-cast and a meshed
+// light kit (Imaging/lighting.h: Light, RenderStyle), so that a ray-cast and a meshed
 // picture of the same shape look alike — and the checkerboard floor's pattern.
 #pragma once
 
@@ -27,7 +27,7 @@ struct LightKit
 };
 
 /// The style's lights in world space for the camera frame of `view`.
-LightKit world_lights(const render::RenderStyle& style, const ViewRays& view);
+LightKit world_lights(const imaging::RenderStyle& style, const ViewRays& view);
 
 /// Lit colour of a surface point: `n` the unit outward normal, `v` the unit direction towards
 /// the eye, `key_light` the fraction of the key light that reaches the point (shadows).

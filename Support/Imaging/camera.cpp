@@ -1,4 +1,4 @@
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-namespace frep::render
+namespace frep::imaging
 {
 
 namespace
@@ -243,4 +243,4 @@ Camera fit_points(std::span<const Vec3> points,
   return camera;
 }
 
-} // namespace frep::render
+} // namespace frep::imaging

@@ -3,7 +3,7 @@
 // view, perspective and parallel; a box's corners reach the fill on both sides of the limiting
 // axis, framed tighter than by fit_box; a free band at the bottom stays free; a margin widens;
 // no points is usable.
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <numbers>
 #include <vector>
 
-namespace frep::render
+namespace frep::imaging
 {
 namespace
 {
@@ -223,4 +223,4 @@ TEST(Camera, DegenerateInputsStayUsable)
 }
 
 } // namespace
-} // namespace frep::render
+} // namespace frep::imaging

@@ -8,7 +8,7 @@
 #include <array>
 #include <span>
 
-namespace frep::render
+namespace frep::imaging
 {
 
 using Vec3 = std::array<double, 3>;
@@ -90,4 +90,4 @@ Camera fit_points(std::span<const Vec3> points,
   const FitOptions& options = {},
   double margin = 0.0);
 
-} // namespace frep::render
+} // namespace frep::imaging

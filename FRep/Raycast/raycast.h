@@ -1,7 +1,7 @@
 // Direct rendering of an FRep solid, without meshing: every picture sample casts a ray and finds
 // the first point where F >= 0, robustly for any FRep (not only distance fields), then shades it
 // with the gradient's normal under the same camera and lights as the mesh renderer
-// (Render/mesh_renderer.h). Plain C++: no VTK, no OpenGL, no display.
+// (Imaging/camera.h, Imaging/lighting.h). Plain C++: no VTK, no OpenGL, no display.
 //
 // How the first root is found (and why it misses nothing the picture can show):
 //  1. The picture is cut into tiles of samples. A tile's rays between two depths fill a convex
@@ -29,9 +29,9 @@
 // sample's search depends only on its own ray.
 #pragma once
 
-#include "Render/camera.h"
-#include "Render/image.h"
-#include "Render/mesh_renderer.h"
+#include "Imaging/camera.h"
+#include "Imaging/image.h"
+#include "Imaging/lighting.h"
 
 #include "Compiler/tape.h"
 #include "Eval/interval.h"
@@ -128,11 +128,11 @@ std::optional<double> lowest_z(const Shape& shape, int pixels = 128, int threads
 /// neighbouring rays (widen by it); a part thinner than that may be missed, as in any picture.
 struct Silhouette
 {
-  std::vector<render::Vec3> points; ///< world points; empty when no ray meets the solid
+  std::vector<imaging::Vec3> points; ///< world points; empty when no ray meets the solid
   double spacing = 0.0;             ///< world units between neighbouring rays
 };
 Silhouette silhouette(const Shape& shape,
-  const render::CameraFrame& view,
+  const imaging::CameraFrame& view,
   int pixels = 48,
   int threads = 1);
 
@@ -141,7 +141,7 @@ struct Style
   /// The mesh renderer's lights, ambient, specular, shininess and supersample (per axis, 1..4),
   /// so that ray-cast and meshed pictures match. Its `threads` is the mesh renderer's: the ray
   /// caster's threads come from render()'s RunControl.
-  render::RenderStyle render;
+  imaging::RenderStyle render;
   /// The shape casts shadows on itself (one more ray per lit sample towards the key light).
   bool self_shadows = false;
   double shadow_factor = 0.35; ///< light left in a shadow, 0..1
@@ -177,8 +177,8 @@ struct Result
 /// VTK filter may pass UpdateProgress), with rising fractions in [0, 1] as tiles finish (steps
 /// of at least 0.01), and with 1 when the picture is complete. Either stops the picture (it is
 /// then incomplete and the result says "cancelled").
-Result render(render::Image& target,
-  const render::Camera& camera,
+Result render(imaging::Image& target,
+  const imaging::Camera& camera,
   const Shape& shape,
   const Floor* floor = nullptr,
   const Style& style = {},

@@ -7,7 +7,7 @@
 // the view between two depths is the convex hull of its eight corners).
 #pragma once
 
-#include "Render/camera.h"
+#include "Imaging/camera.h"
 
 #include "Eval/interval.h"
 
@@ -52,7 +52,7 @@ struct ViewRays
 };
 
 /// The rays of a width x height sample picture of `camera`, mapped into model space by `map`.
-ViewRays make_view_rays(const render::Camera& camera, int width, int height, const Affine3& map);
+ViewRays make_view_rays(const imaging::Camera& camera, int width, int height, const Affine3& map);
 
 /// The depths [lo, hi] where o + lambda d is inside `box` (lo > hi: never), from `from` on.
 std::array<double, 2> clip_to_box(const Vec3& o, const Vec3& d, const std::array<Interval, 3>& box,

@@ -45,7 +45,7 @@ ShadowMap::ShadowMap(const Shape& shape, const std::array<Interval, 3>& clip, co
     half[k] = 0.5 * (hi[k] - lo[k]);
   }
   const double radius = std::max(std::sqrt(dot(half, half)), 1e-300);
-  render::Camera camera;
+  imaging::Camera camera;
   camera.orthographic = true;
   camera.parallel_scale = radius;
   camera.focal_point = centre;

@@ -131,10 +131,10 @@ Vec3 ViewRays::world_direction(double sx, double sy) const
     forward[2] + a * right[2] + b * up[2] };
 }
 
-ViewRays make_view_rays(const render::Camera& camera, int width, int height, const Affine3& map)
+ViewRays make_view_rays(const imaging::Camera& camera, int width, int height, const Affine3& map)
 {
   ViewRays v;
-  const render::CameraFrame frame = render::camera_frame(camera);
+  const imaging::CameraFrame frame = imaging::camera_frame(camera);
   v.orthographic = camera.orthographic;
   v.cx = 0.5 * width;
   v.cy = 0.5 * height;

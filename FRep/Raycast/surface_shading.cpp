@@ -26,12 +26,12 @@ double segment_distance2(double px, double py, double ax, double ay, double bx, 
 
 } // namespace
 
-LightKit world_lights(const render::RenderStyle& style, const ViewRays& view)
+LightKit world_lights(const imaging::RenderStyle& style, const ViewRays& view)
 {
   LightKit kit;
   kit.ambient = static_cast<float>(std::max(0.0, style.ambient));
   kit.shininess = static_cast<float>(std::clamp(style.shininess, 0.0, 4096.0));
-  for (const render::Light& light : style.lights)
+  for (const imaging::Light& light : style.lights)
   {
     // Camera coordinates: x right, y up, z from the scene towards the camera.
     const double x = light.direction[0], y = light.direction[1], z = light.direction[2];

@@ -28,7 +28,7 @@ std::optional<LowestHit> look_up(const Shape& shape,
   int pixels,
   int threads)
 {
-  render::Camera camera;
+  imaging::Camera camera;
   camera.position = { cx, cy, below };
   camera.focal_point = { cx, cy, below + half };
   camera.view_up = { 0.0, 1.0, 0.0 };
@@ -37,7 +37,7 @@ std::optional<LowestHit> look_up(const Shape& shape,
   camera.near_distance = 1e-6 * half;
   Style style;
   style.render.supersample = 1;
-  render::Image picture(pixels, pixels);
+  imaging::Image picture(pixels, pixels);
   std::vector<float> depth;
   RunControl run;
   run.threads = threads;
@@ -55,7 +55,7 @@ std::optional<LowestHit> look_up(const Shape& shape,
   const double step = 2.0 * half / pixels;
   const double a = (static_cast<double>(i % pixels) + 0.5) * step - half;
   const double b = half - (static_cast<double>(i / pixels) + 0.5) * step;
-  const render::CameraFrame frame = render::camera_frame(camera);
+  const imaging::CameraFrame frame = imaging::camera_frame(camera);
   return LowestHit{ below + *nearest,
     cx + a * frame.right[0] + b * frame.up[0],
     cy + a * frame.right[1] + b * frame.up[1] };
@@ -120,7 +120,7 @@ std::optional<double> lowest_z(const Shape& shape, int pixels, int threads)
   return fine ? std::min(coarse->z, fine->z) : coarse->z;
 }
 
-Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int pixels, int threads)
+Silhouette silhouette(const Shape& shape, const imaging::CameraFrame& view, int pixels, int threads)
 {
   Silhouette result;
   if (!shape.tape || shape.tape->input_count != 3 || pixels < 2)
@@ -136,16 +136,16 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
   // The solid's world box in the view's coordinates: the picture covers its corners.
   std::array<double, 3> lo, hi;
   world_box(shape, bounds, lo, hi);
-  const std::array<const render::Vec3*, 3> axes{ &view.right, &view.up, &view.forward };
+  const std::array<const imaging::Vec3*, 3> axes{ &view.right, &view.up, &view.forward };
   std::array<double, 3> vlo, vhi;
   vlo.fill(std::numeric_limits<double>::infinity());
   vhi.fill(-std::numeric_limits<double>::infinity());
   for (int c = 0; c < 8; ++c)
   {
-    const render::Vec3 p{ c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
+    const imaging::Vec3 p{ c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2] };
     for (int k = 0; k < 3; ++k)
     {
-      const render::Vec3& a = *axes[k];
+      const imaging::Vec3& a = *axes[k];
       const double v = a[0] * p[0] + a[1] * p[1] + a[2] * p[2];
       vlo[k] = std::min(vlo[k], v);
       vhi[k] = std::max(vhi[k], v);
@@ -154,7 +154,7 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
   const double half = 0.5 * std::max({ vhi[0] - vlo[0], vhi[1] - vlo[1], 1e-9 });
   const double a0 = 0.5 * (vlo[0] + vhi[0]), b0 = 0.5 * (vlo[1] + vhi[1]);
   const double front = vlo[2] - 0.01 * std::max(vhi[2] - vlo[2], 2.0 * half) - 1e-9;
-  render::Camera camera;
+  imaging::Camera camera;
   for (int k = 0; k < 3; ++k)
   {
     camera.position[k] = a0 * view.right[k] + b0 * view.up[k] + front * view.forward[k];
@@ -170,7 +170,7 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
   solid.bounds = bounds;
   Style style;
   style.render.supersample = 1;
-  render::Image picture(pixels, pixels);
+  imaging::Image picture(pixels, pixels);
   std::vector<float> depth;
   RunControl run;
   run.threads = threads;
@@ -179,7 +179,7 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
     return result;
   }
   // Each hit's world point: the pixel's ray (rows run top down) at its depth.
-  const render::CameraFrame frame = render::camera_frame(camera);
+  const imaging::CameraFrame frame = imaging::camera_frame(camera);
   result.spacing = 2.0 * half / pixels;
   for (std::size_t i = 0; i < depth.size(); ++i)
   {
@@ -189,7 +189,7 @@ Silhouette silhouette(const Shape& shape, const render::CameraFrame& view, int p
     }
     const double a = (static_cast<double>(i % pixels) + 0.5) * result.spacing - half;
     const double b = half - (static_cast<double>(i / pixels) + 0.5) * result.spacing;
-    render::Vec3 p;
+    imaging::Vec3 p;
     for (int k = 0; k < 3; ++k)
     {
       p[k] =

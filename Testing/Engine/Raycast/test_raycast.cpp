@@ -27,7 +27,7 @@ namespace
 using frep::Interval;
 using frep::RunControl;
 namespace rc = frep::raycast;
-namespace render = frep::render;
+namespace imaging = frep::imaging;
 
 std::shared_ptr<const frep::Tape> tape_of(const std::string& body, int dimension = 3)
 {
@@ -52,7 +52,7 @@ rc::Shape sphere_shape(double radius = 1.0)
 rc::Style lambert_style(int supersample = 1, int threads = 1)
 {
   rc::Style style;
-  style.render.lights = { render::Light{ { 0.0, 0.0, 1.0 }, 1.0, 0.0 } };
+  style.render.lights = { imaging::Light{ { 0.0, 0.0, 1.0 }, 1.0, 0.0 } };
   style.render.ambient = 0.0;
   style.render.specular = 0.0;
   style.render.supersample = supersample;
@@ -60,9 +60,9 @@ rc::Style lambert_style(int supersample = 1, int threads = 1)
   return style;
 }
 
-render::Camera ortho_camera(double scale)
+imaging::Camera ortho_camera(double scale)
 {
-  render::Camera camera;
+  imaging::Camera camera;
   camera.position = { 0.0, -10.0, 0.0 };
   camera.focal_point = { 0.0, 0.0, 0.0 };
   camera.view_up = { 0.0, 0.0, 1.0 };
@@ -71,7 +71,7 @@ render::Camera ortho_camera(double scale)
   return camera;
 }
 
-int covered(const render::Image& image)
+int covered(const imaging::Image& image)
 {
   int n = 0;
   for (int y = 0; y < image.height; ++y)
@@ -86,7 +86,7 @@ int covered(const render::Image& image)
 
 TEST(Raycast, OrthographicSphereSilhouetteAndShading)
 {
-  render::Image image(200, 200);
+  imaging::Image image(200, 200);
   const rc::Result r = rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   // Radius 1 world unit = 50 pixels (100 pixels per 2 units of parallel scale).
@@ -105,10 +105,10 @@ TEST(Raycast, OrthographicSphereSilhouetteAndShading)
 
 TEST(Raycast, PerspectiveSilhouetteIsTheExactProjection)
 {
-  render::Camera camera;
+  imaging::Camera camera;
   camera.position = { 0.0, -6.0, 0.0 };
   camera.view_angle_deg = 30.0;
-  render::Image image(301, 301);
+  imaging::Image image(301, 301);
   const rc::Result r = rc::render(image, camera, sphere_shape(), nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   // The silhouette's half angle is asin(r / d); in pixels, focal * tan(asin(1/6)).
@@ -124,7 +124,7 @@ TEST(Raycast, PerspectiveSilhouetteIsTheExactProjection)
 
 TEST(Raycast, DepthIsTheNearestPoint)
 {
-  render::Image image(101, 101);
+  imaging::Image image(101, 101);
   std::vector<float> depth;
   const rc::Result r =
     rc::render(image, ortho_camera(2.0), sphere_shape(), nullptr, lambert_style(), &depth);
@@ -142,7 +142,7 @@ TEST(Raycast, ThinShellBelowTheMeshGridIsFound)
   rc::Shape shell;
   shell.tape = tape_of("0.01 - abs(sqrt(x[1]^2 + x[2]^2 + x[3]^2) - 1)");
   shell.box = { Interval{ -2, 2 }, Interval{ -2, 2 }, Interval{ -2, 2 } };
-  render::Image image(100, 100);
+  imaging::Image image(100, 100);
   const rc::Result r = rc::render(image, ortho_camera(2.0), shell, nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   const double expected = std::numbers::pi * 25.25 * 25.25;
@@ -151,10 +151,10 @@ TEST(Raycast, ThinShellBelowTheMeshGridIsFound)
 
 TEST(Raycast, BehindTheCameraOrOutsideTheBoxIsEmpty)
 {
-  render::Camera away;
+  imaging::Camera away;
   away.position = { 0.0, -6.0, 0.0 };
   away.focal_point = { 0.0, -12.0, 0.0 }; // looking away from the sphere
-  render::Image image(64, 64);
+  imaging::Image image(64, 64);
   rc::Result r = rc::render(image, away, sphere_shape(), nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(covered(image), 0);
@@ -162,7 +162,7 @@ TEST(Raycast, BehindTheCameraOrOutsideTheBoxIsEmpty)
 
   rc::Shape outside = sphere_shape();
   outside.tape = tape_of("1 - (x[1] - 5)^2 - x[2]^2 - x[3]^2"); // centred outside the box
-  render::Image image2(64, 64);
+  imaging::Image image2(64, 64);
   r = rc::render(image2, ortho_camera(8.0), outside, nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(covered(image2), 0);
@@ -175,7 +175,7 @@ TEST(Raycast, TheBoxCutsTheSolidWithCaps)
   all.tape = tape_of("1 + 0 * x[1]");
   all.box = { Interval{ -1, 1 }, Interval{ -1, 1 }, Interval{ -1, 1 } };
   all.colour = { 1.0F, 1.0F, 1.0F };
-  render::Image image(100, 100);
+  imaging::Image image(100, 100);
   const rc::Result r = rc::render(image, ortho_camera(2.0), all, nullptr, lambert_style());
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(covered(image), 50 * 50);
@@ -184,7 +184,7 @@ TEST(Raycast, TheBoxCutsTheSolidWithCaps)
 
 TEST(Raycast, SameImageForOneAndTwoThreads)
 {
-  render::Camera camera;
+  imaging::Camera camera;
   camera.position = { 4.0, -6.0, 3.0 };
   rc::Shape shape;
   shape.tape = tape_of("max(1 - x[1]^2 - x[2]^2 - x[3]^2, 0.3 - (x[1] - 1)^2 - x[2]^2 - x[3]^2)");
@@ -195,7 +195,7 @@ TEST(Raycast, SameImageForOneAndTwoThreads)
   floor.square = 1.0;
   floor.columns = floor.rows = 6;
   floor.path = { -2.0, -2.0, 2.0, 1.0, 2.0, 2.0 };
-  render::Image one(160, 120), two(160, 120);
+  imaging::Image one(160, 120), two(160, 120);
   rc::Style style;
   style.self_shadows = true;
   RunControl run;
@@ -212,7 +212,7 @@ TEST(Raycast, SameImageForOneAndTwoThreads)
 
 TEST(Raycast, BadInputIsRefused)
 {
-  render::Image image(8, 8);
+  imaging::Image image(8, 8);
   rc::Shape flat;
   flat.tape = tape_of("1 - x[1]^2 - x[2]^2", 2);
   flat.box = { Interval{ -1, 1 }, Interval{ -1, 1 }, Interval{ -1, 1 } };
@@ -223,13 +223,13 @@ TEST(Raycast, BadInputIsRefused)
   rc::Shape bad_box = sphere_shape();
   bad_box.box[1] = Interval{ 1, -1 };
   EXPECT_FALSE(rc::render(image, ortho_camera(1.0), bad_box).ok());
-  render::Image empty;
+  imaging::Image empty;
   EXPECT_FALSE(rc::render(empty, ortho_camera(1.0), sphere_shape()).ok());
 }
 
 TEST(Raycast, CancelStopsTheWork)
 {
-  render::Image image(64, 64);
+  imaging::Image image(64, 64);
   RunControl run;
   run.cancel = [] { return true; };
   const rc::Result r =
@@ -241,7 +241,7 @@ TEST(Raycast, CancelStopsTheWork)
 // mesher), after the first report.
 TEST(Raycast, ProgressReturningFalseStopsTheWork)
 {
-  render::Image image(160, 160);
+  imaging::Image image(160, 160);
   RunControl run;
   run.threads = 1;
   int reports = 0;
@@ -254,7 +254,7 @@ TEST(Raycast, ProgressReturningFalseStopsTheWork)
 
 TEST(Raycast, ProgressRisesToOneOnTheCallingThread)
 {
-  render::Image image(160, 160);
+  imaging::Image image(160, 160);
   rc::Style style = lambert_style();
   style.render.supersample = 2;
   const std::thread::id caller = std::this_thread::get_id();
@@ -337,8 +337,8 @@ TEST(Raycast, SolidBoundsAndGivenBounds)
   empty.tape = tape_of("-1 - x[1]^2");
   EXPECT_EQ(rc::solid_bounds(empty.tape, empty.box).status, frep::mesh::SolidBounds::Status::Empty);
 
-  const render::Camera camera = ortho_camera(1.2);
-  render::Image searched(64, 64), given(64, 64);
+  const imaging::Camera camera = ortho_camera(1.2);
+  imaging::Image searched(64, 64), given(64, 64);
   ASSERT_TRUE(rc::render(searched, camera, ball, nullptr, lambert_style()).ok());
   ball.bounds = b;
   ASSERT_TRUE(rc::render(given, camera, ball, nullptr, lambert_style()).ok());
@@ -354,16 +354,16 @@ TEST(Raycast, SilhouetteOfABall)
   ball.to_world = { 1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3 }; // moved to (1, 2, 3)
   for (const double az : { 0.0, 35.0, 120.0 })
   {
-    const render::CameraFrame view = render::view_frame(az, 25.0);
+    const imaging::CameraFrame view = imaging::view_frame(az, 25.0);
     const rc::Silhouette s = rc::silhouette(ball, view, 48, 2);
     // The picture covers the bounds' cube (side 3 to 1/256 of the box) seen along the view.
     ASSERT_GT(s.points.size(), 48u * 48 / 5);
     EXPECT_GT(s.spacing, 3.0 / 48);
     EXPECT_LT(s.spacing, 3.2 * std::sqrt(3.0) / 48);
     double right_lo = 1e9, right_hi = -1e9;
-    for (const render::Vec3& p : s.points)
+    for (const imaging::Vec3& p : s.points)
     {
-      const render::Vec3 d{ p[0] - 1, p[1] - 2, p[2] - 3 };
+      const imaging::Vec3 d{ p[0] - 1, p[1] - 2, p[2] - 3 };
       EXPECT_NEAR(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1.5, 1e-3);
       EXPECT_LE(d[0] * view.forward[0] + d[1] * view.forward[1] + d[2] * view.forward[2], 1e-3);
       const double r = d[0] * view.right[0] + d[1] * view.right[1] + d[2] * view.right[2];
@@ -375,7 +375,7 @@ TEST(Raycast, SilhouetteOfABall)
   }
   rc::Shape empty = sphere_shape();
   empty.tape = tape_of("-1 - x[1]^2");
-  EXPECT_TRUE(rc::silhouette(empty, render::view_frame(0.0, 0.0)).points.empty());
+  EXPECT_TRUE(rc::silhouette(empty, imaging::view_frame(0.0, 0.0)).points.empty());
 }
 
 } // namespace

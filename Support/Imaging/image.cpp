@@ -1,4 +1,4 @@
-#include "Render/image.h"
+#include "Imaging/image.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <memory>
 
-namespace frep::render
+namespace frep::imaging
 {
 
 float srgb_to_linear(float encoded)
@@ -209,4 +209,4 @@ std::string write_ppm(const Image& image, const std::string& path, Rgba backgrou
   return {};
 }
 
-} // namespace frep::render
+} // namespace frep::imaging

@@ -144,18 +144,31 @@ CameraFrame view_frame(double azimuth_deg, double elevation_deg)
     fit_box({ -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 }, 1.0, azimuth_deg, elevation_deg));
 }
 
-Camera fit_points(std::span<const Vec3> points,
+namespace
+{
+
+/// What fit_oriented found: the fitted camera, or that there was no finite point, or that the
+/// points were all at one place (`at`), which has no size to fit.
+struct OrientedFit
+{
+  enum class Kind
+  {
+    Fitted,
+    NoPoint,
+    OnePlace
+  } kind;
+  Camera camera;
+  Vec3 at;
+};
+
+/// fit_points' work for a camera already oriented (its frame, view angle and projection): the
+/// nearest eye along its view direction that sees every point within the fill.
+OrientedFit fit_oriented(Camera camera,
+  std::span<const Vec3> points,
   double aspect,
-  double azimuth_deg,
-  double elevation_deg,
   const FitOptions& options,
   double margin)
 {
-  FitOptions oriented = options;
-  oriented.fit_corners = false;
-  // fit_box orients the camera (view up continuous through the poles) and sets the projection.
-  Camera camera =
-    fit_box({ -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 }, aspect, azimuth_deg, elevation_deg, oriented);
   const CameraFrame f = camera_frame(camera);
   // The points in the view's coordinates (right, up, forward), and their extent.
   std::vector<Vec3> view;
@@ -177,7 +190,7 @@ Camera fit_points(std::span<const Vec3> points,
   }
   if (!(lo[0] <= hi[0]))
   {
-    return camera; // no finite point: the unit sphere at the origin
+    return { OrientedFit::Kind::NoPoint, camera, {} };
   }
   margin = std::isfinite(margin) ? std::max(margin, 0.0) : 0.0;
   aspect = aspect > 0.0 && std::isfinite(aspect) ? aspect : 1.0;
@@ -192,7 +205,7 @@ Camera fit_points(std::span<const Vec3> points,
     const Vec3 at{ c[0] * f.right[0] + c[1] * f.up[0] + c[2] * f.forward[0],
       c[0] * f.right[1] + c[1] * f.up[1] + c[2] * f.forward[1],
       c[0] * f.right[2] + c[1] * f.up[2] + c[2] * f.forward[2] };
-    return fit_box(at, at, aspect, azimuth_deg, elevation_deg, oriented); // one place only
+    return { OrientedFit::Kind::OnePlace, camera, at };
   }
   // The eye at (sx, sy, e) in the view's coordinates, looking along +forward. The picture spans
   // -1..1 of its half height up; the points go into the window over the free bottom band,
@@ -240,7 +253,58 @@ Camera fit_points(std::span<const Vec3> points,
     camera.position[k] = camera.focal_point[k] - distance * f.forward[k];
   }
   camera.near_distance = 0.01 * distance;
-  return camera;
+  return { OrientedFit::Kind::Fitted, camera, {} };
+}
+
+} // namespace
+
+
+Camera fit_points(std::span<const Vec3> points,
+  double aspect,
+  double azimuth_deg,
+  double elevation_deg,
+  const FitOptions& options,
+  double margin)
+{
+  FitOptions oriented = options;
+  oriented.fit_corners = false;
+  // fit_box orients the camera (view up continuous through the poles) and sets the projection.
+  const Camera camera =
+    fit_box({ -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 }, aspect, azimuth_deg, elevation_deg, oriented);
+  const OrientedFit fit = fit_oriented(camera, points, aspect, options, margin);
+  switch (fit.kind)
+  {
+    case OrientedFit::Kind::NoPoint:
+      return camera; // the unit sphere at the origin
+    case OrientedFit::Kind::OnePlace:
+      return fit_box(fit.at, fit.at, aspect, azimuth_deg, elevation_deg, oriented);
+    case OrientedFit::Kind::Fitted:
+      break;
+  }
+  return fit.camera;
+}
+
+Camera fit_points(std::span<const Vec3> points,
+  double aspect,
+  const Camera& direction,
+  const FitOptions& options,
+  double margin)
+{
+  Camera camera = direction;
+  camera.view_angle_deg = options.view_angle_deg;
+  camera.orthographic = options.orthographic;
+  const OrientedFit fit = fit_oriented(camera, points, aspect, options, margin);
+  if (fit.kind == OrientedFit::Kind::OnePlace)
+  {
+    // Nothing to fit: the same view, moved to look at that place.
+    for (int k = 0; k < 3; ++k)
+    {
+      camera.position[k] += fit.at[k] - camera.focal_point[k];
+      camera.focal_point[k] = fit.at[k];
+    }
+    return camera;
+  }
+  return fit.camera;
 }
 
 } // namespace frep::imaging

@@ -90,4 +90,15 @@ Camera fit_points(std::span<const Vec3> points,
   const FitOptions& options = {},
   double margin = 0.0);
 
+/// fit_points for the view direction of `direction` (its frame: position towards focal point,
+/// view up) instead of an azimuth and elevation, for views the user turns (FRepStudio's section
+/// view). The projection is `options`' (view angle, orthographic); the camera's own distance and
+/// focal point do not matter. Points all at one place: the same view moved to look at it; no
+/// finite point: `direction` with `options`' projection.
+Camera fit_points(std::span<const Vec3> points,
+  double aspect,
+  const Camera& direction,
+  const FitOptions& options = {},
+  double margin = 0.0);
+
 } // namespace frep::imaging

@@ -340,6 +340,8 @@ void TestFRepStudio::viewFramesTheSolid()
   QVERIFY(aboutBallBounds(window->currentObjectSummary()->ranges.range(0), 1.0));
   QCOMPARE(window->errorList()->count(), 0);
   const auto [ball_height, ball_width] = greenExtent(window->sectionView()->renderToImage());
+  qInfo("the unit ball spans %.3f of the section view's height and %.3f of its width", ball_height,
+    ball_width);
   QVERIFY2(std::max(ball_height, ball_width) > 0.5,
     qPrintable(QString("the ball spans %1 of the view's height, %2 of its width")
                  .arg(ball_height)

@@ -139,6 +139,60 @@ TEST(Camera, FitPointsFramesTheirOutline)
   }
 }
 
+TEST(Camera, FitPointsAlongAGivenViewIsTheSameFit)
+{
+  // The direction given as a camera (FRepStudio's turned view) fits as the azimuth and elevation
+  // that give that direction do (to rounding: the frame is computed from other numbers), with
+  // the options' projection, and frames a box's corners tightly.
+  std::vector<Vec3> corners;
+  for (int corner = 0; corner < 8; ++corner)
+    corners.push_back({ corner & 1 ? 3.0 : -1.0, corner & 2 ? 1.5 : -0.5, corner & 4 ? 2.0 : 0.0 });
+  for (const bool orthographic : { false, true })
+  {
+    for (double az = -150; az < 180; az += 75)
+    {
+      for (double el = -60; el <= 60; el += 40)
+      {
+        FitOptions fit;
+        fit.orthographic = orthographic;
+        fit.fill = 0.85;
+        const Camera by_angles = fit_points(corners, 1.25, az, el, fit);
+        Camera direction = by_angles;
+        direction.position = { 7.0, -3.0, 2.0 }; // anywhere along another distance...
+        const CameraFrame f = view_frame(az, el);
+        for (int k = 0; k < 3; ++k) // ...on the same view direction
+          direction.focal_point[k] = direction.position[k] + 4.0 * f.forward[k];
+        direction.view_angle_deg = 50; // the options' projection wins
+        direction.orthographic = !orthographic;
+        const Camera by_camera = fit_points(corners, 1.25, direction, fit);
+        for (int k = 0; k < 3; ++k)
+        {
+          EXPECT_NEAR(by_camera.position[k], by_angles.position[k], 1e-9);
+          EXPECT_NEAR(by_camera.focal_point[k], by_angles.focal_point[k], 1e-9);
+        }
+        EXPECT_EQ(by_camera.view_angle_deg, 30.0);
+        EXPECT_EQ(by_camera.orthographic, orthographic);
+        EXPECT_NEAR(by_camera.parallel_scale, by_angles.parallel_scale, 1e-9);
+        // The corners within the fill, the outline reaching it (the tight fit).
+        double widest = 0.0;
+        for (const Vec3& p : corners)
+        {
+          const std::array<double, 2> xy = on_picture(by_camera, p);
+          EXPECT_LE(std::abs(xy[0]), 0.85 * 1.25 * 1.0001);
+          EXPECT_LE(std::abs(xy[1]), 0.85 * 1.0001);
+          widest = std::max({ widest, std::abs(xy[0]) / 1.25, std::abs(xy[1]) });
+        }
+        EXPECT_GT(widest, 0.85 * 0.999);
+      }
+    }
+  }
+  // All at one place: the same view, looking at it.
+  Camera direction;
+  const std::vector<Vec3> one(3, Vec3{ 2.0, 2.0, 2.0 });
+  const Camera at = fit_points(one, 1.0, direction, FitOptions{});
+  EXPECT_EQ(at.focal_point, (Vec3{ 2.0, 2.0, 2.0 }));
+}
+
 TEST(Camera, FitPointsOfABoxsCornersAndMargin)
 {
   const Vec3 lo{ -1, -1, -1 }, hi{ 1, 1, 1 };

@@ -106,7 +106,7 @@ mapping::Section MapWorkers::section(const mapping::Sample& sample, int worker)
 {
   mapping::SectionOptions so;
   so.pool = pools_[static_cast<std::size_t>(worker)];
-  so.progress = [](double) { return !frep::durable::InterruptGuard::interrupted(); };
+  so.cancel = [] { return frep::durable::InterruptGuard::interrupted(); };
   mapping::Section section =
     mapping::make_section(*inputs_.model, inputs_.parameters, inputs_.plan, sample, so);
   if (section.cancelled || frep::durable::InterruptGuard::interrupted())

@@ -342,11 +342,10 @@ Section make_section(const Model& model,
     grid.samples[k] = options.samples[k] > 0 ? options.samples[k] : plan.samples[k];
   }
   mesh::ExtractOptions extract;
+  static_cast<RunControl&>(extract) = options; // threads, pool, progress, cancel
   extract.iso = 0.0;
   extract.normals = options.normals;
   extract.attributes = plan.vertex_colouring.source == VertexColouring::Source::Attributes;
-  extract.pool = options.pool;
-  extract.progress = options.progress;
   mesh::ExtractResult r = axes == 3 ? mesh::extract_surface(tape, grid, extract)
                                     : mesh::extract_contour(tape, grid, extract);
   section.statistics = r.statistics;

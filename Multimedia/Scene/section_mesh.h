@@ -10,25 +10,20 @@
 #include "Plan/unit_map.h"
 
 #include "Compiler/model.h"
+#include "Eval/run_control.h"
 #include "Mesh/surface.h"
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace frep
-{
-class ThreadPool;
-}
-
 namespace frep::mapping
 {
 
-struct SectionOptions
+/// The run control (threads or a shared pool, progress that may stop, cancel) goes to the mesher
+/// as it is: one settings struct for long work (Eval/run_control.h).
+struct SectionOptions : RunControl
 {
-  std::shared_ptr<ThreadPool> pool;              ///< null: the mesher's own, all cores
-  std::function<bool(double fraction)> progress; ///< false cancels
   bool normals = true;
   /// Grid samples per world axis; {0, 0, 0} = the plan's.
   std::array<int, 3> samples{ 0, 0, 0 };

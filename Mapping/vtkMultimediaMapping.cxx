@@ -5,7 +5,6 @@
 
 #include "vtkObjectFactory.h"
 
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 

@@ -5,13 +5,9 @@
 
 #include <sndfile.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <string>
-#include <sys/stat.h>
 #include <system_error>
-#include <unistd.h>
 #include <vector>
 
 namespace frep::media

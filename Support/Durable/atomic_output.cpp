@@ -27,13 +27,8 @@ AtomicOutput::AtomicOutput(std::string path)
   }
 }
 
-AtomicOutput::~AtomicOutput()
-{
-  if (file_.is_open())
-  {
-    file_.close(); // before the PendingFile removes the temporary
-  }
-}
+// file_ is declared after pending_, so it is closed before the PendingFile removes the temporary.
+AtomicOutput::~AtomicOutput() = default;
 
 std::ostream& AtomicOutput::stream()
 {

@@ -3,66 +3,57 @@
 #include "DurableSave.h"
 
 #include "Plan/mapping_json.h"
+#include "Production/production.h"
+#include "shape_files.h"
 
-#include <QCoreApplication>
 #include <QDir>
-#include <QFile>
-#include <QFileInfo>
-#include <QStandardPaths>
 
 #include <algorithm>
 #include <cmath>
 
 namespace frepstudio
 {
+namespace
+{
+
+std::vector<std::string> strings(const QStringList& list)
+{
+  std::vector<std::string> out;
+  for (const QString& item : list)
+    out.push_back(item.toStdString());
+  return out;
+}
+
+} // namespace
 
 AnimationExport::AnimationExport(QObject* parent)
   : QObject(parent)
 {
-  poll_timer_.setInterval(200);
-  connect(&poll_timer_, &QTimer::timeout, this, &AnimationExport::poll);
-  connect(&process_,
-    qOverload<int, QProcess::ExitStatus>(&QProcess::finished),
-    this,
-    &AnimationExport::processFinished);
-  process_.setProcessChannelMode(QProcess::SeparateChannels);
 }
 
 AnimationExport::~AnimationExport()
 {
-  if (isRunning())
-  {
-    process_.terminate();
-    process_.waitForFinished(10000);
-  }
+  cancelled_ = true;
+  if (thread_.joinable())
+    thread_.join();
 }
 
-QString AnimationExport::frepkitProgram()
+void AnimationExport::setUserInputs(const UserInputs& inputs, const frep::LoadOptions& options)
 {
-  // The frepkit beside FRepStudio (<prefix>/bin, or build/bin in the build tree), else PATH.
-  const QString sibling = QCoreApplication::applicationDirPath() + "/frepkit";
-  if (QFileInfo(sibling).isExecutable())
-  {
-    return sibling;
-  }
-  return QStandardPaths::findExecutable("frepkit");
+  inputs_ = inputs;
+  load_options_ = options;
 }
 
 bool AnimationExport::start(const QString& model_text,
+  const QString& model_name,
   const QString& object,
   const frep::mapping::Spec& spec,
   const QString& output_directory,
   QString* error)
 {
-  if (isRunning())
+  if (running_ || thread_.joinable())
   {
     *error = tr("an export is already running");
-    return false;
-  }
-  const QString program = frepkitProgram();
-  if (program.isEmpty())
-  {
-    *error = tr("the frepkit program was not found (it is built with FRepStudio)");
     return false;
   }
   output_ = output_directory;
@@ -72,7 +63,7 @@ bool AnimationExport::start(const QString& model_text,
     *error = tr("cannot create %1").arg(work);
     return false;
   }
-  auto write = [&](const QString& name, const QByteArray& bytes)
+  auto save = [&](const QString& name, const QByteArray& bytes)
   {
     const QString path = QDir(work).filePath(name);
     if (const QString problem = saveDurably(path, bytes); !problem.isEmpty())
@@ -82,73 +73,105 @@ bool AnimationExport::start(const QString& model_text,
     }
     return true;
   };
-  if (!write("model.hf", model_text.toUtf8()) ||
-      !write("mapping.json", QByteArray::fromStdString(frep::mapping::save_mapping(spec))))
+  if (!save("model.hf", model_text.toUtf8()) ||
+      !save("mapping.json", QByteArray::fromStdString(frep::mapping::save_mapping(spec))))
   {
     return false;
   }
   expected_frames_ =
     std::max(1, static_cast<int>(std::lround(spec.animation.duration * spec.animation.fps)));
-  QStringList arguments{ "map",
-    QDir(work).filePath("model.hf"),
-    QDir(work).filePath("mapping.json"),
-    "-O",
-    output_directory,
-    "--name",
-    "animation",
-    "--quiet" };
-  if (!object.isEmpty())
-  {
-    arguments << "--object" << object;
-  }
-  arguments << userInputArguments(inputs_);
   cancelled_ = false;
-  process_.start(program, arguments);
-  if (!process_.waitForStarted(10000))
-  {
-    *error = tr("cannot start %1: %2").arg(program, process_.errorString());
-    return false;
-  }
-  poll_timer_.start();
-  emit progress(0, expected_frames_);
+  shown_permille_ = -1;
+  running_ = true;
+  emit progress(0, 1000);
+  thread_ = std::thread(&AnimationExport::run,
+    this,
+    model_text.toStdString(),
+    model_name.toStdString(),
+    object.toStdString(),
+    spec);
   return true;
 }
 
 void AnimationExport::cancel()
 {
-  if (isRunning())
-  {
-    cancelled_ = true;
-    process_.terminate(); // SIGTERM: frepkit's interrupt guard stops between samples
-  }
+  cancelled_ = true;
 }
 
-void AnimationExport::poll()
+void AnimationExport::run(std::string model_text,
+  std::string model_name,
+  std::string object,
+  frep::mapping::Spec spec)
 {
-  const QStringList frames =
-    QDir(QDir(output_).filePath("frames")).entryList({ "frame_*.png" }, QDir::Files);
-  emit progress(std::min(static_cast<int>(frames.size()), expected_frames_), expected_frames_);
+  frep::LoadOptions options = load_options_;
+  options.object = frep::mapping::mapped_object(spec, object);
+  frep::mapping::ProductionInputs in;
+  in.model_key = model_text + frepkit::user_inputs_key(strings(inputs_.libraries),
+                                strings(inputs_.shapes), inputs_.unsignedDistance);
+  const frep::LoadedModel loaded =
+    frep::load_model(frep::ModelSource::from_text(std::move(model_text), model_name), options);
+  if (!loaded.ok())
+  {
+    complete(false, QString::fromStdString(loaded.message()).trimmed());
+    return;
+  }
+  in.model = loaded.model;
+  in.parameters = spec.parameters;
+  in.spec = std::move(spec);
+  in.model_label = QDir(output_).filePath(".frepstudio/model.hf").toStdString();
+  in.mapping_label = QDir(output_).filePath(".frepstudio/mapping.json").toStdString();
+  frep::mapping::ProductionOptions run;
+  run.directory = output_.toStdString();
+  run.stem = "animation";
+  run.cancel = [this] { return cancelled_.load(); };
+  run.progress = [this](double fraction)
+  {
+    reportProgress(fraction);
+    return true;
+  };
+  const frep::mapping::ProductionReport report = frep::mapping::produce(in, run);
+  if (report.status == frep::mapping::ProductionReport::Status::Cancelled)
+  {
+    complete(false, tr("cancelled; the frames written so far are kept"));
+    return;
+  }
+  if (!report.ok())
+  {
+    QStringList lines;
+    for (const std::string& d : report.diagnostics)
+      lines << QString::fromStdString(d);
+    lines << QString::fromStdString(report.error);
+    complete(false, lines.join('\n'));
+    return;
+  }
+  complete(true,
+    tr("animation.mp4, animation.wav, the frames and manifest.json are in %1").arg(output_));
 }
 
-void AnimationExport::processFinished(int code, QProcess::ExitStatus status)
+void AnimationExport::reportProgress(double fraction)
 {
-  poll_timer_.stop();
-  poll();
-  const QString messages = QString::fromUtf8(process_.readAllStandardError()).trimmed();
-  if (cancelled_)
-  {
-    emit finished(false, tr("cancelled; the frames written so far are kept"));
-  }
-  else if (status != QProcess::NormalExit || code != 0)
-  {
-    emit finished(
-      false, messages.isEmpty() ? tr("frepkit map failed (exit code %1)").arg(code) : messages);
-  }
-  else
-  {
-    emit finished(true,
-      tr("animation.mp4, animation.wav, the frames and manifest.json are in %1").arg(output_));
-  }
+  // Called by produce() one call at a time, from its workers: only a new per-mille value is
+  // sent to the window's thread.
+  const int permille = static_cast<int>(std::floor(std::clamp(fraction, 0.0, 1.0) * 1000.0));
+  if (shown_permille_.exchange(permille) == permille)
+    return;
+  QMetaObject::invokeMethod(
+    this, [this, permille] { emit progress(permille, 1000); }, Qt::QueuedConnection);
+}
+
+void AnimationExport::complete(bool ok, const QString& message)
+{
+  // On the window's thread: the export's thread has ended (or is ending) by then.
+  QMetaObject::invokeMethod(
+    this,
+    [this, ok, message]
+    {
+      if (thread_.joinable())
+        thread_.join();
+      running_ = false;
+      emit finished(ok, message);
+    },
+    Qt::QueuedConnection);
 }
 
 } // namespace frepstudio

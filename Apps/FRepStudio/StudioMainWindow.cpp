@@ -245,13 +245,13 @@ void StudioMainWindow::buildMenus()
       return;
     }
     auto* dialog = new QProgressDialog(tr("Exporting frames, sound and movie..."), tr("Cancel"), 0,
-      job->expectedFrames(), this);
+      1000, this);
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(0);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(job, &AnimationExport::progress, dialog, [dialog](int frames, int total) {
+    connect(job, &AnimationExport::progress, dialog, [dialog](int done, int total) {
       dialog->setMaximum(total);
-      dialog->setValue(std::min(frames, total - 1)); // the movie follows the last frame
+      dialog->setValue(std::min(done, total - 1)); // closed by finished, not by the value
     });
     connect(dialog, &QProgressDialog::canceled, job, &AnimationExport::cancel);
     connect(job, &AnimationExport::finished, this, [this, dialog](bool ok, const QString& message) {
@@ -721,9 +721,11 @@ AnimationExport* StudioMainWindow::exportAnimation(const QString& directory, QSt
     spec.animation.path = path_->path();
   }
   auto* job = new AnimationExport(this);
-  job->setUserInputs(userInputs_);
+  job->setUserInputs(userInputs_, loadOptions_);
   const QString object = QString::fromStdString(panel_->currentObject());
-  if (!job->start(editor_->toPlainText(), object, spec, directory, error))
+  // The name the editor's diagnostics use (its extension chooses the language).
+  const QString name = file_.isEmpty() ? QStringLiteral("<editor>") : QFileInfo(file_).fileName();
+  if (!job->start(editor_->toPlainText(), name, object, spec, directory, error))
   {
     delete job;
     return nullptr;

@@ -115,7 +115,7 @@ protected:
 
 private:
   frep::LoadOptions loadOptions_; // --library and --shape, as the engine loads them
-  UserInputs userInputs_; // absolute paths, for the export
+  UserInputs userInputs_; // absolute paths: their files key the export's frames
   void buildMenus();
   void startAnalysis();
   void applyAnalysis(ModelAnalysis analysis);

@@ -23,16 +23,4 @@ UserInputs absoluteUserInputs(const UserInputs& inputs)
   return out;
 }
 
-QStringList userInputArguments(const UserInputs& inputs)
-{
-  QStringList arguments;
-  for (const QString& library : inputs.libraries)
-    arguments << "--library" << library;
-  for (const QString& shape : inputs.shapes)
-    arguments << "--shape" << shape;
-  if (inputs.unsignedDistance)
-    arguments << "--unsigned-distance";
-  return arguments;
-}
-
 } // namespace frepstudio

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <fstream>
+#include <iterator>
 
 namespace frepkit
 {
@@ -22,7 +24,45 @@ bool ends_with(std::string s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/// The bytes of a file, or "" when it cannot be read.
+std::string bytes_of(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return in ? std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>())
+            : std::string();
+}
+
+/// The file of a shape spec name=FILE[:ISO] (the ISO suffix is part of the spec, keyed anyway).
+std::string shape_file_bytes(const std::string& spec)
+{
+  const std::size_t eq = spec.find('=');
+  const std::string file = eq == std::string::npos ? spec : spec.substr(eq + 1);
+  std::string bytes = bytes_of(file);
+  if (const std::size_t colon = file.rfind(':'); bytes.empty() && colon != std::string::npos)
+  {
+    bytes = bytes_of(file.substr(0, colon));
+  }
+  return bytes;
+}
+
 } // namespace
+
+std::string user_inputs_key(const std::vector<std::string>& libraries,
+  const std::vector<std::string>& shapes, bool unsigned_distance)
+{
+  std::string key;
+  for (const std::string& library : libraries)
+  {
+    key += '\0' + library + '\0' + bytes_of(library);
+  }
+  for (const std::string& shape : shapes)
+  {
+    key += '\0' + shape + '\0' + shape_file_bytes(shape);
+  }
+  key += '\0';
+  key += unsigned_distance ? "unsigned" : "signed";
+  return key;
+}
 
 std::string add_shape_file(
   const std::string& spec, bool unsigned_distance, frep::UserFunctionRegistry& registry)

@@ -26,4 +26,11 @@ std::string add_user_inputs(const std::vector<std::string>& libraries,
   const std::vector<std::string>& shapes, bool unsigned_distance,
   frep::UserFunctionRegistry& registry);
 
+/// What a model's values depend on besides its own text, as one string: each library's and shape
+/// file's name and contents, and the unsigned-distance choice. An export's frames are kept from
+/// an earlier run only when this is the same (frep::mapping::ProductionInputs::model_key), so a
+/// changed mesh or library renders them again.
+std::string user_inputs_key(const std::vector<std::string>& libraries,
+  const std::vector<std::string>& shapes, bool unsigned_distance);
+
 } // namespace frepkit

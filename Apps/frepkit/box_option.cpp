@@ -1,6 +1,6 @@
 #include "box_option.h"
 
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "number_format.h"
 #include "user_error.h"
 

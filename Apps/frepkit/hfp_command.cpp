@@ -3,7 +3,7 @@
 #include "Compiler/attribute_rgb.h"
 #include "Eval/point_evaluator.h"
 #include "Durable/atomic_output.h"
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "hfp_arguments.h"
 #include "Durable/interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
@@ -51,9 +51,9 @@ private:
 
 /// The specialisation of -x: the three mapped coordinates are free (in X, Y, Z order), the others
 /// take -x's constants (0 beyond the list, as hfp's x array).
-CoordinateMapping hfp_mapping(const HfpArguments& a, const frep::ast::Object& object)
+SectionAxes hfp_axes(const HfpArguments& a, const frep::ast::Object& object)
 {
-  CoordinateMapping mapping;
+  SectionAxes axes;
   for (int axis = 0; axis < 3; ++axis)
   {
     const int index = a.xyz_mapping[static_cast<std::size_t>(axis)];
@@ -64,21 +64,21 @@ CoordinateMapping hfp_mapping(const HfpArguments& a, const frep::ast::Object& ob
                       std::to_string(index + 1) +
                       "] (see -x); a surface needs 3 of the model's coordinates");
     }
-    mapping.free.push_back(index);
+    axes.free.push_back(index);
   }
-  mapping.fixed.resize(static_cast<std::size_t>(object.x_dim));
+  axes.fixed.resize(static_cast<std::size_t>(object.x_dim));
   for (int i = 0; i < object.x_dim; ++i)
   {
     const bool free = i == a.xyz_mapping[0] || i == a.xyz_mapping[1] || i == a.xyz_mapping[2];
     if (!free)
     {
-      mapping.fixed[static_cast<std::size_t>(i)] =
+      axes.fixed[static_cast<std::size_t>(i)] =
         static_cast<std::size_t>(i) < a.x_constants.size()
           ? a.x_constants[static_cast<std::size_t>(i)]
           : 0.0;
     }
   }
-  return mapping;
+  return axes;
 }
 
 /// -s D: hfp refined each vertex to D cells; bisection halves the interval per step.
@@ -100,7 +100,7 @@ struct OutputFile
 
 int run_cli_layers(const HfpArguments& a,
   const frep::Model& model,
-  const CoordinateMapping& mapping,
+  const SectionAxes& axes,
   StageTimer& timer)
 {
   const double zmin = a.box[2];
@@ -141,8 +141,8 @@ int run_cli_layers(const HfpArguments& a,
       break;
     }
     // The section z = const: the Z axis's coordinate fixed, X and Y the contour's inputs.
-    CoordinateMapping layer = mapping;
-    layer.fixed[static_cast<std::size_t>(mapping.free[2])] = z;
+    SectionAxes layer = axes;
+    layer.fixed[static_cast<std::size_t>(axes.free[2])] = z;
     layer.free.pop_back();
     const frep::Specialisation specialisation = layer.specialisation(a.parameters);
     const std::shared_ptr<const frep::Tape> tape = model.specialise(specialisation);
@@ -263,7 +263,7 @@ int run_hfp(const std::vector<std::string>& args)
   const std::shared_ptr<const frep::Model> model = loaded.model;
   timer.stage("Time to Read and Parse File");
 
-  const CoordinateMapping mapping = hfp_mapping(a, object);
+  const SectionAxes axes = hfp_axes(a, object);
   if (a.reduce)
   {
     std::cout << "note: -r (reduce polygons) is not done by frepkit\n";
@@ -274,11 +274,11 @@ int run_hfp(const std::vector<std::string>& args)
     {
       std::cout << "note: -cli writes only the CLI file (as hfp): no -wrl/-stl/-stlb/-pov output\n";
     }
-    return run_cli_layers(a, *model, mapping, timer);
+    return run_cli_layers(a, *model, axes, timer);
   }
 
   const std::shared_ptr<const frep::Tape> tape =
-    model->specialise(mapping.specialisation(a.parameters));
+    model->specialise(axes.specialisation(a.parameters));
   if (a.attributes && object.s_dim < 3)
   {
     std::cout << "note: -ct: " << object.name << " has s[" << object.s_dim

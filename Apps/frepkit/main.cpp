@@ -5,6 +5,7 @@
 #include "hfp_command.h"
 #include "demo_command.h"
 #include "Durable/interrupt_guard.h"
+#include "Imaging/png_writer.h"
 #include "map_command.h"
 #include "mesh_command.h"
 #include "slice_command.h"
@@ -54,7 +55,8 @@ int report_failure(std::string message)
 }
 
 /// Runs a command under one InterruptGuard (Support/Durable), so that a signal at any moment of
-/// any subcommand, its writes included, ends in a clean exit; a UserError or OutputError is one
+/// any subcommand, its writes included, ends in a clean exit; a UserError, OutputError or
+/// PngError (a picture that cannot be encoded, or no libpng in this build) is one
 /// message and exit code 1, an interruption exit code 128 + the signal, anything else exit
 /// code 2. A command that finished before it noticed a signal has written everything: its exit
 /// code stands.
@@ -70,6 +72,10 @@ int guarded(const std::function<int()>& command)
     return report_failure(e.what());
   }
   catch (const frep::durable::OutputError& e)
+  {
+    return report_failure(e.what());
+  }
+  catch (const frep::imaging::PngError& e)
   {
     return report_failure(e.what());
   }

@@ -1,12 +1,155 @@
 #include "map_command.h"
 
 #include "Durable/interrupt_guard.h"
-#include "map_phases.h"
+#include "model_loading.h"
+#include "progress_bar.h"
+#include "shape_files.h"
+#include "user_error.h"
+
+#include "Plan/mapping_json.h"
+#include "Production/production.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
 namespace frepkit
 {
+namespace
+{
+
+namespace mapping = frep::mapping;
+
+std::string read_file(const std::string& path, const char* what)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw UserError(std::string("cannot read the ") + what + " " + path);
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The mapping file, checked, with --resolution, --frames and --method applied.
+mapping::Spec load_spec(const MapOptions& options)
+{
+  const mapping::LoadResult loaded =
+    mapping::load_mapping(read_file(options.mapping, "mapping file"));
+  if (!loaded.errors.empty())
+  {
+    for (const auto& e : loaded.errors)
+    {
+      std::cerr << options.mapping << ": " << (e.place.empty() ? "" : e.place + ": ")
+                << e.message << '\n';
+    }
+    throw UserError("the mapping file is not valid; nothing written");
+  }
+  mapping::Spec spec = loaded.spec;
+  if (options.resolution)
+  {
+    spec.world.resolution = *options.resolution;
+  }
+  if (options.frames)
+  {
+    spec.animation.duration = *options.frames / spec.animation.fps;
+  }
+  if (options.method)
+  {
+    using Method = mapping::RenderSettings::Method;
+    const Method method = *options.method == "raycast" ? Method::Raycast : Method::Mesh;
+    spec.render.method = method;
+    spec.render.frames_method = method;
+  }
+  return spec;
+}
+
+// The mapping, the model it names (--object, else the mapping's, else the default) and what
+// identifies them.
+mapping::ProductionInputs load_inputs(const MapOptions& options)
+{
+  mapping::ProductionInputs in;
+  in.spec = load_spec(options);
+  in.parameters = options.parameters.empty() ? in.spec.parameters : options.parameters;
+  const std::string object = mapping::mapped_object(in.spec, options.object.value_or(""));
+  in.model = frepkit::load_model(options.model,
+    options.user,
+    object.empty() ? std::nullopt : std::optional<std::string>(object),
+    in.parameters.size())
+               .model;
+  in.model_key = read_file(options.model, "model") +
+                 user_inputs_key(options.user.libraries, options.user.shapes,
+                   options.user.unsigned_distance);
+  in.model_label = options.model;
+  in.mapping_label = options.mapping;
+  return in;
+}
+
+void print_summary(const MapOptions& options,
+  const mapping::ProductionInputs& in,
+  const mapping::ProductionReport& report)
+{
+  if (options.quiet)
+  {
+    return;
+  }
+  std::cerr << "frepkit map: " << in.model->name() << " (" << in.model->x_dim() << "-D) -> "
+            << options.output_directory << "\n";
+  for (const auto& s : report.stages)
+  {
+    char line[256];
+    std::snprintf(
+      line, sizeof line, "  %-12s %7.2f s  %s\n", s.name.c_str(), s.seconds, s.detail.c_str());
+    std::cerr << line;
+  }
+  char line[128];
+  std::snprintf(line,
+    sizeof line,
+    "  %-12s %7.2f s  %zu triangles meshed, manifest.json\n",
+    "total",
+    report.seconds,
+    report.triangles);
+  std::cerr << line;
+}
+
+// The report as frepkit reports: the mapping's problems on standard error and a UserError, an
+// interruption as one (exit code 128 + the signal), warnings unless --quiet.
+void check_report(const MapOptions& options, const mapping::ProductionReport& report)
+{
+  using Status = mapping::ProductionReport::Status;
+  if (report.status == Status::Cancelled)
+  {
+    throw frep::durable::Interrupted(
+      "interrupted; the files written so far are kept (run again to resume)");
+  }
+  for (const std::string& d : report.diagnostics)
+  {
+    std::cerr << options.mapping << ": " << d << '\n';
+  }
+  if (!report.ok())
+  {
+    throw UserError(report.error);
+  }
+  for (const std::string& w : report.warnings)
+  {
+    if (!options.quiet)
+    {
+      std::cerr << "frepkit: warning: " << w << '\n';
+    }
+  }
+  if (report.failed_samples > 0)
+  {
+    std::cerr << "frepkit: warning: " << report.failed_samples
+              << " samples raised a run-time error (taken as outside)\n";
+  }
+}
+
+} // namespace
 
 CLI::App* add_map_command(CLI::App& app, MapOptions& o)
 {
@@ -43,7 +186,7 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
       "produce only these: spreadsheet, path, frames, audio, movie, shape (default: all the "
       "mapping defines)")
     ->delimiter(',')
-    ->check(CLI::IsMember({ "spreadsheet", "path", "frames", "audio", "movie", "shape" }));
+    ->check(CLI::IsMember(mapping::product_names()));
   cmd->add_option("--name",
     o.name,
     "stem of the movie and sound files (default: the mapping "
@@ -58,50 +201,31 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
 
 int run_map(const MapOptions& options)
 {
-  using namespace map_run;
-  const auto start = Clock::now();
-  MapInputs in = load_inputs(options);
-  const MapProducts products = choose_products(options, in.plan);
-  const MapOutput out = prepare_output(options);
-  MapRecord record;
-  frame_solids(in, products, out.workers, record);
+  const mapping::ProductionInputs in = load_inputs(options);
+  mapping::ProductionOptions run;
+  run.directory = options.output_directory;
+  run.stem = !options.name.empty() ? options.name
+                                   : std::filesystem::path(options.mapping).stem().string();
+  run.only = options.only;
+  run.force = options.force;
+  run.threads = options.threads;
+  run.write_manifest = options.manifest_out == nullptr;
   // Ctrl-C / SIGTERM (main()'s guard) cancels: finished files are kept, temporaries removed.
-  MapWorkers workers(in, products, out.workers, options.quiet);
-  if (products.spreadsheet)
+  run.cancel = [] { return frep::durable::InterruptGuard::interrupted(); };
+  ProgressBar bar("map", !options.quiet);
+  run.progress = [&bar](double fraction)
   {
-    render_spreadsheet(in, workers, out.directory, record);
-  }
-  if (products.shape)
+    bar.update(fraction); // produce() calls one at a time
+    return true;
+  };
+  const mapping::ProductionReport report = mapping::produce(in, run);
+  bar.finish();
+  check_report(options, report);
+  if (options.manifest_out != nullptr)
   {
-    render_shape(in, workers, out.directory, record);
+    *options.manifest_out = report.manifest;
   }
-  if (products.path)
-  {
-    draw_path(in, workers, out.directory, record);
-  }
-  FrameFiles frames;
-  frames.directory = out.directory / "frames";
-  if (products.frames)
-  {
-    render_frames(options, in, workers, frames, record);
-  }
-  const fs::path wav = out.directory / (out.stem + ".wav");
-  // The sound and the movie are renamed into place by the Media library, which knows nothing of
-  // signals: none is started after one.
-  if (products.audio)
-  {
-    frep::durable::InterruptGuard::throw_if_interrupted();
-    write_sound(in, wav, record);
-  }
-  if (products.movie)
-  {
-    frep::durable::InterruptGuard::throw_if_interrupted();
-    const fs::path movie = out.directory / (out.stem + ".mp4");
-    encode_movie(in, workers, frames, products.audio ? &wav : nullptr, movie, record);
-  }
-  workers.finish_bar();
-  write_manifest(options, in, out.directory, record);
-  print_summary(options, in, out.directory, record, workers, start);
+  print_summary(options, in, report);
   return 0;
 }
 

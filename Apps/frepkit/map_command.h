@@ -2,9 +2,11 @@
 // of cross-sections (spreadsheet.png), the path of the dynamic coordinates (path.png), the
 // animation frames (frames/frame_NNNNN.png), the sound track (NAME.wav), the movie with the
 // sound muxed in (NAME.mp4), the shape alone when nothing varies (shape.png) and manifest.json
-// listing everything with each frame's values. Resumable: frames already written by an interrupted
-// run with the same model and mapping are kept; every file is written under a temporary name and
-// renamed when complete.
+// listing everything with each frame's values. The run is the Production library's
+// (frep::mapping::produce, as FRepStudio's export); this command reads the files, applies the
+// overrides, shows the progress bar and the summary. Resumable: frames already written by an
+// interrupted run with the same model and mapping are kept; every file is written under a
+// temporary name and renamed when complete.
 #pragma once
 
 #include "user_inputs.h"

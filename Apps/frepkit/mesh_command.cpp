@@ -2,7 +2,7 @@
 
 #include "Compiler/attribute_rgb.h"
 #include "box_option.h"
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
 #include "sampling_grid.h"
@@ -41,7 +41,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
     ->add_option("--box",
       options.box,
       "Sampled box: xmin,ymin,zmin,xmax,ymax,zmax (all minima, then all maxima) or a range per "
-      "axis by name, x1=-1:1,x2=-1:1,x3=-1:1 (the coordinates --map puts on X, Y, Z; or "
+      "axis by name, x1=-1:1,x2=-1:1,x3=-1:1 (the coordinates --axes puts on X, Y, Z; or "
       "x=-1:1,y=-1:1,z=-1:1); default: the solid's own bounds plus 5%, found by interval "
       "subdivision; -10..10 on each axis when it is unbounded")
     ->delimiter(',');
@@ -53,11 +53,11 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
     ->delimiter(',');
   mesh->add_option("--iso", options.iso, "Iso value: the surface is F = iso, F >= iso inside")
     ->capture_default_str();
-  mesh->add_option("--map",
-    options.map,
+  mesh->add_option("--axes,--map",
+    options.axes,
     "Which coordinates the axes drive, as hfp's -x: one entry per x[i], X/Y/Z for the axes and "
     "numbers for fixed coordinates (e.g. X,Y,Z,0.25 meshes x4 = 0.25). Default: X,Y,Z and any "
-    "further coordinates fixed at 0 (with a note)");
+    "further coordinates fixed at 0 (with a note). --map is the former name");
   mesh->add_flag("--ascii", options.ascii, "Write ASCII STL instead of binary");
   mesh->add_flag("--no-cap",
     options.no_cap,
@@ -88,10 +88,10 @@ int run_mesh(const MeshOptions& options)
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
 
-  CoordinateMapping mapping;
-  if (options.map)
+  SectionAxes axes;
+  if (options.axes)
   {
-    mapping = parse_axis_map(*options.map, object.x_dim);
+    axes = parse_axes_option(*options.axes, object.x_dim);
   }
   else
   {
@@ -102,21 +102,21 @@ int run_mesh(const MeshOptions& options)
         "]: a surface needs 3 coordinates (for a 2-D model use 'frepkit slice' to draw its "
         "contour)");
     }
-    mapping = default_mapping(object.x_dim, 3);
+    axes = default_axes(object.x_dim, 3);
     if (object.x_dim > 3)
     {
       const std::string fixed =
         object.x_dim == 4 ? std::string("x4 is") : "x4..x" + std::to_string(object.x_dim) + " are";
       std::cerr << "frepkit: note: " << object.name << " has x[" << object.x_dim << "]: " << fixed
-                << " fixed at 0 (choose with --map, e.g. --map X,Y,Z,0.5)\n";
+                << " fixed at 0 (choose with --axes, e.g. --axes X,Y,Z,0.5)\n";
     }
   }
   const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;
   job.start = start;
-  job.tape = model->specialise(mapping.specialisation(options.parameters));
+  job.tape = model->specialise(axes.specialisation(options.parameters));
   job.grid =
-    make_grid(box_or_solid_bounds(parse_box(options.box, mapping.free), job.tape, options.quiet),
+    make_grid(box_or_solid_bounds(parse_box(options.box, axes.free), job.tape, options.quiet),
       options.grid,
       3);
   job.extract.iso = options.iso;

@@ -26,7 +26,7 @@ struct MeshOptions
   std::vector<std::string> box; ///< --box entries (parse_box)
   std::vector<std::int64_t> grid;
   double iso = 0;
-  std::optional<std::string> map;
+  std::optional<std::string> axes; ///< --axes (formerly --map): X,Y,Z and fixed values
   bool ascii = false;
   bool no_cap = false;
   bool no_normals = false;

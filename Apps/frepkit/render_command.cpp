@@ -2,13 +2,13 @@
 
 #include "Durable/atomic_output.h"
 #include "box_option.h"
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "Durable/interrupt_guard.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
 #include "number_format.h"
 #include "sampling_grid.h"
-#include "section_writers/png_writer.h"
+#include "Imaging/png_writer.h"
 #include "user_error.h"
 
 #include "picture_size.h"
@@ -135,19 +135,19 @@ int run_render(const RenderOptions& options)
     load_model(options.model, options.user, options.object, options.parameters.size());
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
-  const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
-  if (mapping.free.size() != 3)
+  const SectionAxes axes = parse_fix_free(options.fix, options.free, object.x_dim);
+  if (axes.free.size() != 3)
   {
     throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +
-                    std::to_string(mapping.free.size()) + " are free)");
+                    std::to_string(axes.free.size()) + " are free)");
   }
   const std::shared_ptr<const frep::Model> model = loaded.model;
 
   frep::raycast::Shape shape;
-  shape.tape = model->specialise(mapping.specialisation(options.parameters));
+  shape.tape = model->specialise(axes.specialisation(options.parameters));
   // The solid is cut by this box (its own bounds by default); the camera frames the solid in it.
   const frep::mesh::Grid grid = make_grid(
-    box_or_solid_bounds(parse_box(options.box, mapping.free), shape.tape, options.quiet), {}, 3);
+    box_or_solid_bounds(parse_box(options.box, axes.free), shape.tape, options.quiet), {}, 3);
   for (int k = 0; k < 3; ++k)
   {
     shape.box[k] = { grid.lo[k], grid.hi[k] };
@@ -186,7 +186,7 @@ int run_render(const RenderOptions& options)
   }
   {
     frep::durable::AtomicOutput out(options.output);
-    write_png(out.stream(), width, height, frep::imaging::to_rgb8(picture));
+    frep::imaging::write_png(out.stream(), width, height, frep::imaging::to_rgb8(picture));
     out.commit();
   }
   if (!options.quiet)
@@ -201,7 +201,7 @@ int run_render(const RenderOptions& options)
       "and %zu point evaluations, %zu edge pixels, ray casting %.3f s (shadow map %.3f s, "
       "edges %.3f s), total %.3f s\n",
       object.name.c_str(),
-      mapping.free_names().c_str(),
+      axes.free_names().c_str(),
       options.output.c_str(),
       width,
       height,

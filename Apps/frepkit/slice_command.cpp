@@ -3,14 +3,14 @@
 #include "Compiler/attribute_rgb.h"
 #include "Durable/atomic_output.h"
 #include "box_option.h"
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "mesh_writers/mesh_format.h"
 #include "mesh_writers/vtp_writer.h"
 #include "model_loading.h"
 #include "number_format.h"
 #include "sampling_grid.h"
 #include "section_sampling.h"
-#include "section_writers/png_writer.h"
+#include "Imaging/png_writer.h"
 #include "section_writers/section_image.h"
 #include "section_writers/vti_writer.h"
 #include "surface_extraction.h"
@@ -88,15 +88,15 @@ void require_available(SliceKind kind, const std::string& path)
 }
 
 /// "x3 = 0, x4 = 0.5"
-std::string describe_fixed(const CoordinateMapping& mapping)
+std::string describe_fixed(const SectionAxes& axes)
 {
   std::string text;
-  for (std::size_t i = 0; i < mapping.fixed.size(); ++i)
+  for (std::size_t i = 0; i < axes.fixed.size(); ++i)
   {
-    if (mapping.fixed[i])
+    if (axes.fixed[i])
     {
       text += (text.empty() ? "x" : ", x") + std::to_string(i + 1) + " = " +
-              format_short(*mapping.fixed[i]);
+              format_short(*axes.fixed[i]);
     }
   }
   return text;
@@ -168,20 +168,20 @@ int run_slice(const SliceOptions& options)
     load_model(options.model, options.user, options.object, options.parameters.size());
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
-  const CoordinateMapping mapping = parse_fix_free(options.fix, options.free, object.x_dim);
-  const int axes = static_cast<int>(mapping.free.size());
-  const SliceKind kind = slice_kind(options.output, mapping.free.size());
+  const SectionAxes axes = parse_fix_free(options.fix, options.free, object.x_dim);
+  const int axis_count = static_cast<int>(axes.free.size());
+  const SliceKind kind = slice_kind(options.output, axes.free.size());
   require_available(kind, options.output);
   const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =
-    model->specialise(mapping.specialisation(options.parameters));
+    model->specialise(axes.specialisation(options.parameters));
   const frep::mesh::Grid grid =
-    make_grid(box_or_solid_bounds(parse_box(options.box, mapping.free), tape, options.quiet),
+    make_grid(box_or_solid_bounds(parse_box(options.box, axes.free), tape, options.quiet),
       options.grid,
-      axes);
+      axis_count);
   const bool colours = frep::tape_sets_colours(*tape, object.s_dim);
   const bool attributes = frep::tape_sets_attributes(*tape, static_cast<std::size_t>(object.s_dim));
-  const std::string fixed = describe_fixed(mapping);
+  const std::string fixed = describe_fixed(axes);
 
   if (kind == SliceKind::Mesh)
   {
@@ -245,16 +245,16 @@ int run_slice(const SliceOptions& options)
     const bool want_attributes = (kind == SliceKind::Image && attributes) || colours;
     SampledSection section = sample_section(tape,
       grid,
-      axes,
+      axis_count,
       want_attributes,
       options.threads,
       !options.quiet,
       kind == SliceKind::Png && !want_attributes,
       options.iso);
-    for (int k = 0; k < axes; ++k)
+    for (int k = 0; k < axis_count; ++k)
     {
       section.axis_names[static_cast<std::size_t>(k)] =
-        "x" + std::to_string(mapping.free[static_cast<std::size_t>(k)] + 1);
+        "x" + std::to_string(axes.free[static_cast<std::size_t>(k)] + 1);
     }
     failed = section.failed;
     std::size_t inside = 0;
@@ -264,7 +264,7 @@ int run_slice(const SliceOptions& options)
     }
     if (kind == SliceKind::Png)
     {
-      write_png(output.stream(),
+      frep::imaging::write_png(output.stream(),
         section.samples[0],
         section.samples[1],
         render_section(section, options.iso, colours));
@@ -293,8 +293,8 @@ int run_slice(const SliceOptions& options)
     char time[32];
     std::snprintf(time, sizeof time, "%.3g s", seconds);
     std::cout << options.output << ": " << summary << ", " << time << " (axes "
-              << mapping.free_names() << (fixed.empty() ? "" : "; " + fixed) << "; "
-              << describe_grid(grid, axes) << "); failed samples " << failed << '\n';
+              << axes.free_names() << (fixed.empty() ? "" : "; " + fixed) << "; "
+              << describe_grid(grid, axis_count) << "); failed samples " << failed << '\n';
   }
   return 0;
 }

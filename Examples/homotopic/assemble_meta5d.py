@@ -25,7 +25,7 @@ HEAD = """\
 --   Rob_let five solids: 2 of genus 0 and 3 of genus 1.
 -- Objects: cat, robot, nihon, roblet (x[3]), meta5d (x[5]), my_model (x[5]) = meta5d: the
 --   default object of hfp and frepkit is my_model, so
---     frepkit mesh meta5d.hf -o mid.stl --map X,Y,Z,0.5,0.5
+--     frepkit mesh meta5d.hf -o mid.stl --axes X,Y,Z,0.5,0.5
 --     frepkit hfp meta5d.hf -x X,Y,Z,0.5,0.5 -g 100 -stlb mid.stl
 --   mesh the blend; --object cat (or hfp -o cat) meshes one key shape.
 """

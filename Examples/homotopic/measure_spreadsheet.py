@@ -7,7 +7,7 @@ meta5d.hf with the frepkit command-line tool, nothing else:
   keys      of each key shape's own inside samples (Cat, Robot, NiHon, Rob_let, evaluated as the
             objects cat, robot, nihon, roblet of the same file), the percentage also inside the
             cell: how much of each key shape the cell shows;
-  mesh      the cell meshed as the spreadsheet meshes it (frepkit mesh --map X,Y,Z,x4,x5 at
+  mesh      the cell meshed as the spreadsheet meshes it (frepkit mesh --axes X,Y,Z,x4,x5 at
             --mesh-grid samples per axis): triangles, connected components, and the largest
             component's share of the enclosed volume (scattered slivers: many components, a
             small largest share).
@@ -71,7 +71,7 @@ def evaluate(frepkit, model, obj, lines):
 def mesh_statistics(frepkit, model, x4, x5, samples, workdir):
     """Triangles, components and the largest component's share of the volume of one cell."""
     stl = os.path.join(workdir, 'cell.stl')
-    subprocess.run([frepkit, 'mesh', str(model), '-o', stl, '--map', 'X,Y,Z,%g,%g' % (x4, x5),
+    subprocess.run([frepkit, 'mesh', str(model), '-o', stl, '--axes', 'X,Y,Z,%g,%g' % (x4, x5),
                     '--grid', str(samples), '--no-normals', '-q'], check=True)
     data = pathlib.Path(stl).read_bytes()
     count = struct.unpack_from('<I', data, 80)[0]

@@ -200,7 +200,13 @@ MovieResult encode_movie(const MovieInput& input,
       if (std::from_chars(value.data(), value.data() + value.size(), done).ec == std::errc())
         options.progress({ done, input.frame_count });
     };
-  const ProgramResult run = run_program(*ffmpeg, arguments, on_line);
+  const ProgramResult run = run_program(*ffmpeg, arguments, on_line, options.cancel);
+  if (run.stopped)
+  {
+    MovieResult stopped{ where + "cancelled" };
+    stopped.cancelled = true;
+    return stopped;
+  }
   if (!run.ok())
   {
     const std::string message = trimmed(run.standard_error);

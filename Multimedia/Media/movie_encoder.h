@@ -40,11 +40,15 @@ struct MovieOptions
   /// Called from the encoding thread as ffmpeg reports progress (-progress pipe:1); must not
   /// throw.
   std::function<void(const MovieProgress&)> progress;
+  /// Polled while ffmpeg runs, from the calling thread: true stops it (the result says
+  /// `cancelled`; nothing is put in place). Default none.
+  std::function<bool()> cancel;
 };
 
 struct MovieResult
 {
   std::string error; ///< empty = success; ffmpeg's own messages when it failed
+  bool cancelled = false; ///< stopped by MovieOptions::cancel (error says so too)
   bool ok() const { return error.empty(); }
 };
 

@@ -3,6 +3,7 @@
 #include "Media/detail/system_message.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <poll.h>
@@ -106,7 +107,8 @@ std::optional<std::filesystem::path> find_program(std::string_view name)
 
 ProgramResult run_program(const std::filesystem::path& program,
   const std::vector<std::string>& arguments,
-  const std::function<void(std::string_view line)>& on_output_line)
+  const std::function<void(std::string_view line)>& on_output_line,
+  const std::function<bool()>& should_stop)
 {
   ProgramResult result;
   const std::string name = program.string();
@@ -146,14 +148,22 @@ ProgramResult run_program(const std::filesystem::path& program,
   pollfd fds[2] = { { output.read_end, POLLIN, 0 }, { errors.read_end, POLLIN, 0 } };
   int open_count = 2;
   char buffer[4096];
+  bool stopping = false;
   while (open_count > 0)
   {
-    if (::poll(fds, 2, -1) < 0)
+    // With a stop to watch for, wake up now and then even when the program is silent.
+    const int ready = ::poll(fds, 2, should_stop ? 100 : -1);
+    if (ready < 0)
     {
       if (errno == EINTR)
         continue;
       result.error = "waiting for output of " + name + ": " + system_message(errno);
       break;
+    }
+    if (!stopping && should_stop && should_stop())
+    {
+      stopping = true; // asked once; the program ends and closes its pipes
+      ::kill(child, SIGTERM);
     }
     for (int i = 0; i < 2; ++i)
     {
@@ -199,7 +209,13 @@ ProgramResult run_program(const std::filesystem::path& program,
       result.error = "waiting for " + name + ": " + system_message(errno);
       return result;
     }
-  if (WIFEXITED(status))
+  if (stopping)
+  {
+    result.exit_code = 128 + SIGTERM;
+    result.error = name + " was stopped";
+    result.stopped = true;
+  }
+  else if (WIFEXITED(status))
     result.exit_code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status))
   {

@@ -118,14 +118,14 @@ expect_true "capped volume is the box's (216)" near "$(field volume "$out")" 216
 run "mesh --no-cap" 0 "$frepkit" mesh "$sphere" -o open.stl --box -3,-3,-3,3,3,3 --grid 32 -q --no-cap
 run "uncapped mesh is read" 0 "$check" open.stl
 expect_true "uncapped mesh is open where the box cuts it" [ "$(field boundary "$out")" -gt 0 ]
-run "mesh --map on a 4-D model" 0 "$frepkit" mesh "$anim" -o anim.stl --map X,Y,Z,0.5 --box -5,-5,-5,5,5,5 --grid 48 -q
+run "mesh --map (the former name of --axes) on a 4-D model" 0 "$frepkit" mesh "$anim" -o anim.stl --map X,Y,Z,0.5 --box -5,-5,-5,5,5,5 --grid 48 -q
 run "4-D slice x4 = 0.5 is the sphere of radius 4" 0 "$check" anim.stl --closed
 expect_true "x4 = 0.5 volume (268)" near "$(field volume "$out")" 268.08 0.03
-run "mesh a 4-D model without --map" 0 "$frepkit" mesh "$anim" -o anim0.stl --box -5,-5,-5,5,5,5 --grid 48
+run "mesh a 4-D model without --axes" 0 "$frepkit" mesh "$anim" -o anim0.stl --box -5,-5,-5,5,5,5 --grid 48
 expect_in "note: x4 fixed at 0" "$err" "x4 is fixed at 0"
 run "x4 = 0 is the sphere of radius 2" 0 "$check" anim0.stl --closed
 expect_true "x4 = 0 volume (33.5)" near "$(field volume "$out")" 33.51 0.05
-run "mesh --map with Y and Z swapped" 0 "$frepkit" mesh "$anim" -o swapped.stl --map X,Z,Y,0.5 --box -5,-5,-5,5,5,5 --grid 24 -q
+run "mesh --axes with Y and Z swapped" 0 "$frepkit" mesh "$anim" -o swapped.stl --axes X,Z,Y,0.5 --box -5,-5,-5,5,5,5 --grid 24 -q
 run "swapped mapping still closed and outward" 0 "$check" swapped.stl --closed
 run "mesh --iso" 0 "$frepkit" mesh "$sphere" -o iso.stl --iso 16 --grid 48 -q
 run "iso 16 is the sphere of radius 3" 0 "$check" iso.stl --closed
@@ -173,8 +173,8 @@ run "unknown extension" 1 "$frepkit" mesh "$sphere" -o x.3ds
 expect_in "unknown extension lists the formats" "$err" ".stl"
 run "2-D model" 1 "$frepkit" mesh "$(model flat.hf 'my_model(x[2], a[1]) { my_model = 1 - x[1]^2 - x[2]^2; }')" -o x.stl
 expect_in "2-D model message" "$err" "needs 3 coordinates"
-run "bad --map" 1 "$frepkit" mesh "$anim" -o x.stl --map X,Y,0.5
-expect_in "bad --map message" "$err" "Z is missing"
+run "bad --axes" 1 "$frepkit" mesh "$anim" -o x.stl --axes X,Y,0.5
+expect_in "bad --axes message" "$err" "--axes X,Y,0.5: Z is missing"
 run "unknown object" 1 "$frepkit" mesh "$sphere" -o x.stl --object nosuch
 expect_true "no temporary files left after errors" no_temporaries
 

@@ -1,14 +1,14 @@
 // Unit tests of frepkit's parts that do not need a model run: the mesh writers on a hand-made
-// tetrahedron, closing contours along the box (CLI layers), hfp's argument grammar, --map/--fix
+// tetrahedron, closing contours along the box (CLI layers), hfp's argument grammar, --axes/--fix
 // parsing and the --box/--grid rules.
 #include "Compiler/attribute_rgb.h"
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 #include "hfp_arguments.h"
 #include "mesh_writers/mesh_format.h"
 #include "sampling_grid.h"
 #include "section_writers/cli_writer.h"
 #include "section_writers/contour_loops.h"
-#include "section_writers/png_writer.h"
+#include "Imaging/png_writer.h"
 #include "user_error.h"
 
 #include <gtest/gtest.h>
@@ -328,22 +328,22 @@ TEST(HfpArguments, OutputsAndMissingValues)
   EXPECT_NE(messages.find("\"abc\" is not a proper floating point value.\n"), std::string::npos);
 }
 
-TEST(CoordinateMapping, MapOption)
+TEST(SectionAxes, MapOption)
 {
-  const CoordinateMapping m = parse_axis_map("X,Y,Z,0.25", 5);
+  const SectionAxes m = parse_axes_option("X,Y,Z,0.25", 5);
   EXPECT_EQ(m.free, (std::vector<int>{ 0, 1, 2 }));
   EXPECT_EQ(m.fixed[3], 0.25);
   EXPECT_EQ(m.fixed[4], 0.0);
-  EXPECT_EQ(parse_axis_map("0.5,z,x,y", 4).free, (std::vector<int>{ 2, 3, 1 }));
-  EXPECT_THROW(parse_axis_map("X,Y", 3), UserError);
-  EXPECT_THROW(parse_axis_map("X,Y,Z,1", 3), UserError);
-  EXPECT_THROW(parse_axis_map("X,Y,Y", 3), UserError);
-  EXPECT_THROW(parse_axis_map("X,Y,Z,abc", 4), UserError);
+  EXPECT_EQ(parse_axes_option("0.5,z,x,y", 4).free, (std::vector<int>{ 2, 3, 1 }));
+  EXPECT_THROW(parse_axes_option("X,Y", 3), UserError);
+  EXPECT_THROW(parse_axes_option("X,Y,Z,1", 3), UserError);
+  EXPECT_THROW(parse_axes_option("X,Y,Y", 3), UserError);
+  EXPECT_THROW(parse_axes_option("X,Y,Z,abc", 4), UserError);
 }
 
-TEST(CoordinateMapping, FixAndFree)
+TEST(SectionAxes, FixAndFree)
 {
-  CoordinateMapping m = parse_fix_free({ "x4=0.5", "x[5]=0.25" }, {}, 5);
+  SectionAxes m = parse_fix_free({ "x4=0.5", "x[5]=0.25" }, {}, 5);
   EXPECT_EQ(m.free, (std::vector<int>{ 0, 1, 2 }));
   EXPECT_EQ(m.fixed[4], 0.25);
   m = parse_fix_free({ "x1=0", "x4=1", "x5=1" }, { "x3", "x2" }, 5);
@@ -400,7 +400,7 @@ TEST(PngWriter, FewColoursAsAPaletteManyAsRgbSamePixels)
       rgb[3 * p + 2] = static_cast<std::uint8_t>(255 - (c & 0xff));
     }
     std::ostringstream out;
-    write_png(out, width, height, rgb);
+    frep::imaging::write_png(out, width, height, rgb);
     int colour_type = -1;
     EXPECT_EQ(decode_png(out.str(), colour_type), rgb) << colours;
     EXPECT_EQ(colour_type, colours <= 256 ? PNG_COLOR_TYPE_PALETTE : PNG_COLOR_TYPE_RGB) << colours;

@@ -175,6 +175,27 @@ TEST(MovieEncoder, FfmpegFailureLeavesNoPartialFileAndKeepsTheOldMovie)
   EXPECT_EQ(text, "the previous movie");
 }
 
+TEST(MovieEncoder, CancelStopsFfmpegAndPutsNothingInPlace)
+{
+  const auto directory = fresh_directory();
+  const MovieInput input = write_frames(directory);
+  MovieOptions options;
+  int polls = 0;
+  options.cancel = [&] { return ++polls >= 1; }; // asked at once: ffmpeg is stopped
+  const auto output = directory / "movie.mp4";
+  const MovieResult result = encode_movie(input, output, options);
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_FALSE(result.ok());
+  EXPECT_NE(result.error.find("cancelled"), std::string::npos) << result.error;
+  EXPECT_GE(polls, 1);
+  EXPECT_FALSE(std::filesystem::exists(output));
+  for (const std::string& name : file_names(directory))
+  {
+    EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "temporary left behind: " << name;
+    EXPECT_EQ(name.find("partial"), std::string::npos) << "partial file left behind: " << name;
+  }
+}
+
 TEST(MovieEncoder, SoundOfAnotherDurationIsRejected)
 {
   const auto directory = fresh_directory();

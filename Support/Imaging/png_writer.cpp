@@ -1,18 +1,17 @@
 // PNG with libpng, in the process. (It was OpenImageIO in a dlopened module: its start-up, which
 // loads every image-format library it has, cost about 0.45 s per run that wrote a picture, more
 // than sampling a 1024^2 image; libpng is one small library and the encoder is the same zlib.)
-#include "png_writer.h"
+#include "Imaging/png_writer.h"
 
 #include <png.h>
 
 #include <csetjmp>
 #include <cstdint>
 #include <cstdio>
-#include <stdexcept>
 #include <vector>
 #include <string>
 
-namespace frepkit
+namespace frep::imaging
 {
 namespace
 {
@@ -155,7 +154,7 @@ void write_png(std::ostream& out, std::int64_t width, std::int64_t height,
   if (width <= 0 || height <= 0 || width > 0x7fffffff || height > 0x7fffffff ||
     rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
   {
-    throw std::runtime_error("PNG: the picture's size does not match its pixels");
+    throw PngError("PNG: the picture's size does not match its pixels");
   }
   Sink sink;
   sink.out = &out;
@@ -163,12 +162,17 @@ void write_png(std::ostream& out, std::int64_t width, std::int64_t height,
   const bool few_colours = index_colours(rgb.data(), rgb.size() / 3, indexed);
   if (!encode(sink, width, height, rgb.data(), few_colours ? &indexed : nullptr))
   {
-    throw std::runtime_error(std::string("libpng could not encode the PNG: ") + sink.message);
+    throw PngError(std::string("libpng could not encode the PNG: ") + sink.message);
   }
   if (sink.failed)
   {
-    throw std::runtime_error("PNG: writing the file failed");
+    throw PngError("PNG: writing the file failed");
   }
 }
 
-} // namespace frepkit
+void write_png(std::ostream& out, const Image& image)
+{
+  write_png(out, image.width, image.height, to_rgb8(image));
+}
+
+} // namespace frep::imaging

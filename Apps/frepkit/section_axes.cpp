@@ -1,4 +1,4 @@
-#include "coordinate_mapping.h"
+#include "section_axes.h"
 
 #include "user_error.h"
 
@@ -78,7 +78,7 @@ std::optional<double> parse_number(const std::string& text)
   return value;
 }
 
-frep::Specialisation CoordinateMapping::specialisation(const std::vector<double>& parameters) const
+frep::Specialisation SectionAxes::specialisation(const std::vector<double>& parameters) const
 {
   frep::Specialisation s;
   s.parameters = parameters;
@@ -87,7 +87,7 @@ frep::Specialisation CoordinateMapping::specialisation(const std::vector<double>
   return s;
 }
 
-std::string CoordinateMapping::free_names() const
+std::string SectionAxes::free_names() const
 {
   std::string names;
   for (int index : free)
@@ -97,74 +97,74 @@ std::string CoordinateMapping::free_names() const
   return names;
 }
 
-CoordinateMapping parse_axis_map(const std::string& text, int x_dim)
+SectionAxes parse_axes_option(const std::string& text, int x_dim)
 {
   const std::vector<std::string> entries = split_commas(text);
   if (static_cast<int>(entries.size()) > x_dim)
   {
-    throw UserError("--map " + text + ": " + std::to_string(entries.size()) +
+    throw UserError("--axes " + text + ": " + std::to_string(entries.size()) +
                     " entries, but the object has x[" + std::to_string(x_dim) + "]");
   }
-  CoordinateMapping mapping;
-  mapping.free.assign(3, -1);
-  mapping.fixed.assign(static_cast<std::size_t>(x_dim), 0.0);
+  SectionAxes axes;
+  axes.free.assign(3, -1);
+  axes.fixed.assign(static_cast<std::size_t>(x_dim), 0.0);
   for (std::size_t i = 0; i < entries.size(); ++i)
   {
     const std::string& entry = entries[i];
     if (entry.size() == 1 && std::string("XYZxyz").find(entry[0]) != std::string::npos)
     {
       const int axis = std::toupper(static_cast<unsigned char>(entry[0])) - 'X';
-      if (mapping.free[static_cast<std::size_t>(axis)] >= 0)
+      if (axes.free[static_cast<std::size_t>(axis)] >= 0)
       {
-        throw UserError("--map " + text + ": " + entry + " appears twice");
+        throw UserError("--axes " + text + ": " + entry + " appears twice");
       }
-      mapping.free[static_cast<std::size_t>(axis)] = static_cast<int>(i);
-      mapping.fixed[i] = std::nullopt;
+      axes.free[static_cast<std::size_t>(axis)] = static_cast<int>(i);
+      axes.fixed[i] = std::nullopt;
       continue;
     }
     const std::optional<double> value = parse_number(entry);
     if (!value)
     {
-      throw UserError("--map " + text + ": '" + entry +
+      throw UserError("--axes " + text + ": '" + entry +
                       "' is neither X, Y, Z nor a number (entry " + std::to_string(i + 1) + ")");
     }
-    mapping.fixed[i] = *value;
+    axes.fixed[i] = *value;
   }
   for (int axis = 0; axis < 3; ++axis)
   {
-    if (mapping.free[static_cast<std::size_t>(axis)] < 0)
+    if (axes.free[static_cast<std::size_t>(axis)] < 0)
     {
-      throw UserError("--map " + text + ": " + std::string(1, static_cast<char>('X' + axis)) +
+      throw UserError("--axes " + text + ": " + std::string(1, static_cast<char>('X' + axis)) +
                       " is missing (X, Y and Z must each appear once)");
     }
   }
-  return mapping;
+  return axes;
 }
 
-CoordinateMapping default_mapping(int x_dim, int axes)
+SectionAxes default_axes(int x_dim, int axis_count)
 {
-  if (x_dim < axes)
+  if (x_dim < axis_count)
   {
-    throw UserError("the object has x[" + std::to_string(x_dim) + "]: " + std::to_string(axes) +
+    throw UserError("the object has x[" + std::to_string(x_dim) + "]: " + std::to_string(axis_count) +
                     " coordinates are needed");
   }
-  CoordinateMapping mapping;
-  mapping.fixed.assign(static_cast<std::size_t>(x_dim), 0.0);
-  for (int i = 0; i < axes; ++i)
+  SectionAxes axes;
+  axes.fixed.assign(static_cast<std::size_t>(x_dim), 0.0);
+  for (int i = 0; i < axis_count; ++i)
   {
-    mapping.free.push_back(i);
-    mapping.fixed[static_cast<std::size_t>(i)] = std::nullopt;
+    axes.free.push_back(i);
+    axes.fixed[static_cast<std::size_t>(i)] = std::nullopt;
   }
-  return mapping;
+  return axes;
 }
 
-CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
+SectionAxes parse_fix_free(const std::vector<std::string>& fix,
   const std::vector<std::string>& free,
   int x_dim)
 {
   const std::string dimension = "the object has x[" + std::to_string(x_dim) + "]";
-  CoordinateMapping mapping;
-  mapping.fixed.assign(static_cast<std::size_t>(x_dim), std::nullopt);
+  SectionAxes axes;
+  axes.fixed.assign(static_cast<std::size_t>(x_dim), std::nullopt);
   std::vector<bool> is_fixed(static_cast<std::size_t>(x_dim), false);
   for (const std::string& entry : fix)
   {
@@ -185,7 +185,7 @@ CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
       throw UserError("--fix: x" + std::to_string(index + 1) + " is fixed twice");
     }
     is_fixed[static_cast<std::size_t>(index)] = true;
-    mapping.fixed[static_cast<std::size_t>(index)] = *value;
+    axes.fixed[static_cast<std::size_t>(index)] = *value;
   }
   if (free.empty())
   {
@@ -193,7 +193,7 @@ CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
     {
       if (!is_fixed[static_cast<std::size_t>(i)])
       {
-        mapping.free.push_back(i);
+        axes.free.push_back(i);
       }
     }
   }
@@ -214,31 +214,31 @@ CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
       {
         throw UserError("--free '" + name + "': it is also fixed by --fix");
       }
-      if (std::find(mapping.free.begin(), mapping.free.end(), index) != mapping.free.end())
+      if (std::find(axes.free.begin(), axes.free.end(), index) != axes.free.end())
       {
         throw UserError("--free: " + trim(name) + " is listed twice");
       }
-      mapping.free.push_back(index);
+      axes.free.push_back(index);
     }
     for (int i = 0; i < x_dim; ++i)
     {
       if (!is_fixed[static_cast<std::size_t>(i)] &&
-          std::find(mapping.free.begin(), mapping.free.end(), i) == mapping.free.end())
+          std::find(axes.free.begin(), axes.free.end(), i) == axes.free.end())
       {
         throw UserError(
           "x" + std::to_string(i + 1) + " is neither fixed (--fix) nor free (--free)");
       }
     }
   }
-  if (mapping.free.size() != 2 && mapping.free.size() != 3)
+  if (axes.free.size() != 2 && axes.free.size() != 3)
   {
     throw UserError(
-      std::to_string(mapping.free.size()) + " free coordinates (" +
-      (mapping.free.empty() ? std::string("none") : mapping.free_names()) + "; " + dimension +
+      std::to_string(axes.free.size()) + " free coordinates (" +
+      (axes.free.empty() ? std::string("none") : axes.free_names()) + "; " + dimension +
       "): a slice needs 2 (an image or contour) or 3 (a surface or volume); fix the others "
       "with --fix xN=VALUE");
   }
-  return mapping;
+  return axes;
 }
 
 } // namespace frepkit

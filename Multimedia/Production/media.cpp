@@ -1,7 +1,5 @@
-// frepkit map, phase 6: the sound track and the movie.
-#include "map_phases.h"
-
-#include "user_error.h"
+// produce, phase 7: the sound track and the movie.
+#include "Production/detail/phases.h"
 
 #include "Media/movie_encoder.h"
 #include "Media/tone_synthesis.h"
@@ -9,35 +7,34 @@
 
 #include <cstdio>
 
-namespace frepkit::map_run
+namespace frep::mapping::production
 {
 
-void write_sound(const MapInputs& in, const fs::path& wav, MapRecord& record)
+void write_sound(const Job& job, const fs::path& wav, Record& record)
 {
   const auto t0 = Clock::now();
-  const mapping::Plan& plan = in.plan;
-  const mapping::Spec& spec = in.spec;
-  frep::media::VoiceFrames voices;
+  const Plan& plan = job.plan;
+  const Spec& spec = job.spec();
+  media::VoiceFrames voices;
   for (const auto& f : plan.frames)
   {
-    std::vector<frep::media::VoiceParams> v;
+    std::vector<media::VoiceParams> v;
     for (const auto& voice : f.voices)
     {
       v.push_back({ voice.pitch, voice.loudness, voice.timbre });
     }
     voices.push_back(v);
   }
-  const frep::media::SynthesisResult sound =
-    frep::media::synthesise(voices, spec.animation.fps, spec.audio.sample_rate);
+  const media::SynthesisResult sound =
+    media::synthesise(voices, spec.animation.fps, spec.audio.sample_rate);
   if (!sound.ok())
   {
-    throw UserError("sound: " + sound.error);
+    throw ProductionError("sound: " + sound.error);
   }
-  const frep::media::WavWriteResult written =
-    frep::media::write_wav(wav, sound.samples, spec.audio.sample_rate);
+  const media::WavWriteResult written = media::write_wav(wav, sound.samples, spec.audio.sample_rate);
   if (!written.ok())
   {
-    throw UserError(written.error);
+    throw ProductionError(written.error);
   }
   const double duration = static_cast<double>(sound.samples.size()) / spec.audio.sample_rate;
   record.files.push_back({ { "file", wav.filename().string() },
@@ -50,17 +47,17 @@ void write_sound(const MapInputs& in, const fs::path& wav, MapRecord& record)
   record.stages.push_back({ "audio", seconds_since(t0), detail });
 }
 
-void encode_movie(const MapInputs& in,
-  MapWorkers& workers,
+void encode_movie(const Job& job,
+  Workers& workers,
   const FrameFiles& frames,
   const fs::path* audio,
   const fs::path& movie,
-  MapRecord& record)
+  Record& record)
 {
   const auto t0 = Clock::now();
-  const mapping::Plan& plan = in.plan;
-  const double fps = in.spec.animation.fps;
-  frep::media::MovieInput input;
+  const Plan& plan = job.plan;
+  const double fps = job.spec().animation.fps;
+  media::MovieInput input;
   input.frame_pattern = (frames.directory / frames.pattern).string();
   input.frame_count = static_cast<int>(plan.frames.size());
   input.fps = fps;
@@ -68,14 +65,19 @@ void encode_movie(const MapInputs& in,
   {
     input.audio = *audio;
   }
-  frep::media::MovieOptions mo;
+  media::MovieOptions mo;
   const std::size_t before = workers.units_done();
-  mo.progress = [&](const frep::media::MovieProgress& p)
+  mo.progress = [&](const media::MovieProgress& p)
   { workers.show_units(before + p.frames_done / 4.0); };
-  const frep::media::MovieResult encoded = frep::media::encode_movie(input, movie, mo);
+  mo.cancel = [&job] { return job.stopped(); };
+  const media::MovieResult encoded = media::encode_movie(input, movie, mo);
+  if (encoded.cancelled)
+  {
+    throw Stopped();
+  }
   if (!encoded.ok())
   {
-    throw UserError("movie: " + encoded.error);
+    throw ProductionError("movie: " + encoded.error);
   }
   record.files.push_back({ { "file", movie.filename().string() },
     { "kind", "movie" },
@@ -86,4 +88,4 @@ void encode_movie(const MapInputs& in,
   record.stages.push_back({ "movie", seconds_since(t0), movie.filename().string() });
 }
 
-} // namespace frepkit::map_run
+} // namespace frep::mapping::production

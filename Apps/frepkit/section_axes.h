@@ -1,6 +1,7 @@
 // Which model coordinates x[1..n] drive the axes of a mesh, contour or image, and which are fixed:
-// `--map X,Y,Z,0.25` (mesh; hfp's -x), `--fix x4=0.5 --free x1,x2` (slice), or the default (the
-// first coordinates drive the axes, any others are fixed at 0).
+// `--axes X,Y,Z,0.25` (mesh; hfp's -x; formerly --map), `--fix x4=0.5 --free x1,x2` (slice,
+// render), or the default (the first coordinates drive the axes, any others are fixed at 0).
+// (Not a "mapping": that word names the multimedia mapping, Multimedia/Plan.)
 #pragma once
 
 #include "Compiler/model.h"
@@ -12,7 +13,7 @@
 namespace frepkit
 {
 
-struct CoordinateMapping
+struct SectionAxes
 {
   /// 0-based x indices driving the output axes, in axis order (X, Y[, Z]).
   std::vector<int> free;
@@ -25,20 +26,20 @@ struct CoordinateMapping
   std::string free_names() const;
 };
 
-/// --map: a comma-separated list, one entry per coordinate x[1], x[2], ...: X, Y and Z (each
+/// --axes: a comma-separated list, one entry per coordinate x[1], x[2], ...: X, Y and Z (each
 /// exactly once, case-insensitive) say which coordinate each axis drives, numbers fix the
 /// others. Coordinates beyond the list are fixed at 0. Throws UserError for a bad list or one
 /// longer than x_dim.
-CoordinateMapping parse_axis_map(const std::string& text, int x_dim);
+SectionAxes parse_axes_option(const std::string& text, int x_dim);
 
-/// The first `axes` coordinates drive the axes, the rest are fixed at 0. Throws UserError when
-/// x_dim < axes.
-CoordinateMapping default_mapping(int x_dim, int axes);
+/// The first `axis_count` coordinates drive the axes, the rest are fixed at 0. Throws UserError
+/// when x_dim < axis_count.
+SectionAxes default_axes(int x_dim, int axis_count);
 
 /// --fix "x4=0.5,x5=0.25" (also "x[4]=0.5") and --free "x1,x2" (optional: default = the
 /// coordinates not fixed, in increasing order). Every coordinate must be fixed or free, the free
 /// count must be 2 or 3. Throws UserError otherwise.
-CoordinateMapping parse_fix_free(const std::vector<std::string>& fix,
+SectionAxes parse_fix_free(const std::vector<std::string>& fix,
   const std::vector<std::string>& free,
   int x_dim);
 

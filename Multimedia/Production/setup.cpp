@@ -1,0 +1,105 @@
+// produce, phases 1-4: the plan, the products, the output directory, the framing.
+#include "Production/detail/phases.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace frep::mapping::production
+{
+
+void Job::throw_if_stopped() const
+{
+  if (stopped())
+  {
+    throw Stopped();
+  }
+}
+
+bool plan_job(Job& job, std::vector<std::string>& diagnostics)
+{
+  const Model& model = job.model();
+  for (int i = 0; i < model.x_dim(); ++i)
+  {
+    job.coordinates.names.push_back("x" + std::to_string(i + 1));
+    job.coordinates.intervals.push_back({ -10.0, 10.0 }); // hfp's default box
+  }
+  PlanResult planned = make_plan(job.spec(), job.coordinates);
+  if (!planned.ok())
+  {
+    for (const auto& e : planned.errors)
+    {
+      diagnostics.push_back((e.place.empty() ? "" : e.place + ": ") + e.message);
+    }
+    return false;
+  }
+  job.plan = std::move(planned.plan);
+  return true;
+}
+
+Products choose_products(const Job& job)
+{
+  const std::vector<std::string>& only = job.options.only;
+  for (const std::string& name : only)
+  {
+    const auto& known = product_names();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      throw ProductionError("no product is called '" + name +
+                            "' (spreadsheet, path, frames, audio, movie, shape)");
+    }
+  }
+  auto wanted = [&](const char* what)
+  { return only.empty() || std::find(only.begin(), only.end(), what) != only.end(); };
+  const Plan& plan = job.plan;
+  Products p;
+  p.spreadsheet = wanted("spreadsheet") && !plan.cells.empty();
+  p.path = wanted("path") && plan.dynamic_coordinates.size() == 2;
+  p.frames = (wanted("frames") || wanted("movie")) && !plan.frames.empty();
+  p.audio = (wanted("audio") || wanted("movie")) && !plan.frames.empty() && plan.voice_count > 0;
+  p.movie = wanted("movie") && !plan.frames.empty();
+  p.shape = wanted("shape") && plan.cells.empty() && plan.frames.empty();
+  if (!p.spreadsheet && !p.path && !p.frames && !p.audio && !p.shape)
+  {
+    throw ProductionError("the mapping has nothing of --only to produce (spreadsheet needs a "
+                          "spreadsheet coordinate; path, frames, audio and movie a dynamic one; "
+                          "shape neither)");
+  }
+  return p;
+}
+
+void prepare_directory(const fs::path& directory)
+{
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec)
+  {
+    throw ProductionError("cannot create " + directory.string() + ": " + ec.message());
+  }
+}
+
+int worker_count(const ProductionOptions& options)
+{
+  return options.threads > 0 ? options.threads
+                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+void frame_solids(Job& job, const Products& products, int workers, Record& record)
+{
+  if (!(products.spreadsheet || products.shape || products.frames) || job.spec().render.view_box)
+  {
+    return;
+  }
+  const auto t0 = Clock::now();
+  const std::shared_ptr<ThreadPool> pool =
+    job.options.pool ? job.options.pool : std::make_shared<ThreadPool>(workers);
+  job.framing =
+    mapping::frame_solids(job.spec().render, job.model(), job.inputs.parameters, job.plan, pool.get());
+  job.throw_if_stopped();
+  const std::size_t samples = 1 + job.plan.cells.size() + job.plan.frames.size();
+  record.stages.push_back({ "framing",
+    seconds_since(t0),
+    std::to_string(samples) + " solids seen from the view" +
+      (job.framing.empty() ? std::string(": none in the model box") : std::string()) });
+}
+
+} // namespace frep::mapping::production

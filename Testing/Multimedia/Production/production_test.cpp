@@ -1,0 +1,284 @@
+// produce: a mapping made into files end to end. A ball that grows with x4 and x5, both mapped
+// to time (and x4 to a spreadsheet): the files, the manifest's entries, the progress (rising to 1, one
+// call at a time), a mapping that does not fit (nothing written), resuming (frames kept only for
+// the same inputs), and cancelling (what finished kept, no temporary, no movie).
+#include "Production/production.h"
+
+#include "Plan/mapping_json.h"
+
+#include "Compiler/load_model.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+namespace fs = std::filesystem;
+using frep::mapping::ProductionInputs;
+using frep::mapping::ProductionOptions;
+using frep::mapping::ProductionReport;
+
+const char* const Growing = R"(
+grow(x[5], a[1])
+{
+  grow = (0.5 + 0.5 * x[4] + 0.5 * x[5]) - sqrt(x[1]^2 + x[2]^2 + x[3]^2);
+}
+)";
+
+// x4 and x5 run along the animation's path (path.png); with `spreadsheet`, x4 also lays out
+// three cells (x5 is then fixed at its range's middle in them).
+std::string mapping_text(bool spreadsheet, int frames)
+{
+  const std::string cells = spreadsheet
+    ? R"({ "type": "spreadsheet", "axis": "columns", "range": [0, 1], "step": 0.5 },)"
+    : "";
+  return R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2, 2] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2, 2] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-2, 2] }],
+    "x4": [)" + cells + R"({ "type": "dynamic", "range": [0, 1] }],
+    "x5": [{ "type": "dynamic", "range": [0, 1] },
+           { "type": "audio", "parameter": "pitch", "range": [0, 1], "target": [220, 440] }] },
+  "animation": { "duration": )" + std::to_string(frames) + R"(, "fps": 1,
+    "path": { "coordinates": ["x4", "x5"], "points": [[0, 0], [1, 0], [1, 1]] } },
+  "world": { "resolution": 16 },
+  "spreadsheet": { "cell_size": 48 },
+  "render": { "width": 64, "height": 48 } })";
+}
+
+ProductionInputs inputs(const std::string& mapping, const std::string& model_text = Growing)
+{
+  ProductionInputs in;
+  const frep::mapping::LoadResult loaded = frep::mapping::load_mapping(mapping);
+  EXPECT_TRUE(loaded.errors.empty()) << frep::mapping::format_errors(loaded.errors);
+  in.spec = loaded.spec;
+  const frep::LoadedModel model =
+    frep::load_model(frep::ModelSource::from_text(model_text, "grow.hf"));
+  EXPECT_TRUE(model.ok()) << model.message();
+  in.model = model.model;
+  in.model_key = model_text;
+  in.model_label = "grow.hf";
+  in.mapping_label = "grow.json";
+  return in;
+}
+
+/// The report's error with the mapping's problems, for failure messages.
+std::string why(const ProductionReport& r)
+{
+  std::string text = r.error;
+  for (const std::string& d : r.diagnostics)
+  {
+    text += "\n  " + d;
+  }
+  return text;
+}
+
+fs::path fresh(const std::string& name)
+{
+  const fs::path dir = fs::path(FREP_PRODUCTION_TEST_OUTPUT_DIR) / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::vector<std::string> temporaries(const fs::path& dir)
+{
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+  {
+    const std::string name = entry.path().filename().string();
+    if (name.find(".tmp-") != std::string::npos || name.find("partial") != std::string::npos)
+    {
+      found.push_back(entry.path().string());
+    }
+  }
+  return found;
+}
+
+std::size_t frames_in(const fs::path& dir)
+{
+  std::size_t n = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "frames"))
+  {
+    n += entry.path().extension() == ".png";
+  }
+  return n;
+}
+
+const ProductionReport::Status Done = ProductionReport::Status::Done;
+
+TEST(Production, MakesEveryFileAndAManifestThatListsThem)
+{
+  const fs::path out = fresh("all");
+  ProductionOptions run;
+  run.directory = out;
+  run.stem = "grow";
+  run.threads = 2;
+  std::vector<double> seen;
+  std::mutex seen_mutex;
+  std::atomic<int> inside{ 0 };
+  bool overlapped = false;
+  run.progress = [&](double f)
+  {
+    overlapped = overlapped || ++inside > 1;
+    {
+      std::lock_guard<std::mutex> lock(seen_mutex);
+      seen.push_back(f);
+    }
+    --inside;
+    return true;
+  };
+  const ProductionReport report = frep::mapping::produce(inputs(mapping_text(true, 4)), run);
+  ASSERT_EQ(report.status, Done) << why(report);
+  for (const char* file : { "spreadsheet.png", "path.png", "grow.wav", "grow.mp4", "manifest.json",
+         "frames/frame_00000.png", "frames/frame_00003.png" })
+  {
+    EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+  }
+  EXPECT_EQ(frames_in(out), 4u);
+  EXPECT_TRUE(temporaries(out).empty());
+  EXPECT_FALSE(overlapped) << "progress must be called one call at a time";
+  ASSERT_FALSE(seen.empty());
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+  EXPECT_GT(report.triangles, 0u);
+
+  std::ifstream file(out / "manifest.json");
+  const nlohmann::json manifest = nlohmann::json::parse(file);
+  EXPECT_EQ(manifest.dump(2) + "\n", report.manifest);
+  EXPECT_EQ(manifest["model"], "grow.hf");
+  EXPECT_EQ(manifest["object"], "grow");
+  EXPECT_EQ(manifest["dimension"], 5);
+  std::vector<std::string> kinds;
+  for (const auto& f : manifest["files"])
+  {
+    kinds.push_back(f["kind"]);
+  }
+  EXPECT_EQ(kinds,
+    (std::vector<std::string>{ "spreadsheet", "path", "frames", "audio", "movie" }));
+  EXPECT_EQ(manifest["files"][0]["cells"].size(), 3u);
+  EXPECT_EQ(manifest["files"][2]["frames"].size(), 4u);
+  for (const auto& stage : report.stages)
+  {
+    EXPECT_TRUE(manifest["seconds"].contains(stage.name)) << stage.name;
+  }
+}
+
+TEST(Production, OnlyMakesWhatIsAskedAndTheManifestCanStayInTheReport)
+{
+  const fs::path out = fresh("only");
+  ProductionOptions run;
+  run.directory = out;
+  run.only = { "spreadsheet" };
+  run.write_manifest = false;
+  const ProductionReport report = frep::mapping::produce(inputs(mapping_text(true, 2)), run);
+  ASSERT_EQ(report.status, Done) << why(report);
+  EXPECT_TRUE(fs::is_regular_file(out / "spreadsheet.png"));
+  EXPECT_FALSE(fs::exists(out / "frames"));
+  EXPECT_FALSE(fs::exists(out / "manifest.json"));
+  EXPECT_NE(report.manifest.find("spreadsheet.png"), std::string::npos);
+
+  run.only = { "sculpture" };
+  const ProductionReport unknown = frep::mapping::produce(inputs(mapping_text(true, 2)), run);
+  EXPECT_EQ(unknown.status, ProductionReport::Status::Failed);
+  EXPECT_NE(unknown.error.find("sculpture"), std::string::npos) << unknown.error;
+}
+
+TEST(Production, AMappingThatDoesNotFitWritesNothing)
+{
+  const fs::path out = fresh("invalid");
+  ProductionInputs in = inputs(mapping_text(false, 2));
+  const frep::LoadedModel ball = frep::load_model(
+    frep::ModelSource::from_text("ball(x[3], a[1]) { ball = 1 - x[1]^2 - x[2]^2 - x[3]^2; }"));
+  ASSERT_TRUE(ball.ok());
+  in.model = ball.model; // 3-D: the mapping's x4 and x5 do not exist
+  ProductionOptions run;
+  run.directory = out;
+  const ProductionReport report = frep::mapping::produce(in, run);
+  EXPECT_EQ(report.status, ProductionReport::Status::Invalid);
+  EXPECT_FALSE(report.diagnostics.empty());
+  EXPECT_NE(report.error.find("does not fit ball (3-D)"), std::string::npos) << report.error;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Production, FramesAreKeptOnlyForTheSameInputs)
+{
+  const fs::path out = fresh("resume");
+  ProductionOptions run;
+  run.directory = out;
+  run.only = { "frames" };
+  const ProductionReport first = frep::mapping::produce(inputs(mapping_text(false, 3)), run);
+  ASSERT_EQ(first.status, Done) << why(first);
+  auto frames_stage = [](const ProductionReport& r)
+  {
+    for (const auto& s : r.stages)
+    {
+      if (s.name == "frames")
+      {
+        return s.detail;
+      }
+    }
+    return std::string();
+  };
+  const ProductionReport again = frep::mapping::produce(inputs(mapping_text(false, 3)), run);
+  EXPECT_NE(frames_stage(again).find("3 kept from an earlier run"), std::string::npos)
+    << frames_stage(again);
+
+  // Another model text (the key), the same mapping: every frame is drawn again.
+  const std::string other = std::string(Growing) + "\n-- edited\n";
+  const ProductionReport edited = frep::mapping::produce(inputs(mapping_text(false, 3), other), run);
+  EXPECT_EQ(frames_stage(edited).find("kept"), std::string::npos) << frames_stage(edited);
+
+  // force: drawn again too.
+  run.force = true;
+  const ProductionReport forced = frep::mapping::produce(inputs(mapping_text(false, 3), other), run);
+  EXPECT_EQ(frames_stage(forced).find("kept"), std::string::npos) << frames_stage(forced);
+}
+
+TEST(Production, CancellingKeepsWhatFinishedAndLeavesNoTemporary)
+{
+  const fs::path out = fresh("cancel");
+  ProductionOptions run;
+  run.directory = out;
+  run.threads = 1;
+  std::atomic<int> done{ 0 };
+  run.progress = [&](double) { return ++done < 3; }; // false on the third unit: stop
+  const ProductionReport report = frep::mapping::produce(inputs(mapping_text(false, 40)), run);
+  ASSERT_EQ(report.status, ProductionReport::Status::Cancelled) << why(report);
+  EXPECT_NE(report.error.find("cancelled"), std::string::npos);
+  const std::size_t kept = frames_in(out);
+  EXPECT_GE(kept, 2u);
+  EXPECT_LT(kept, 40u);
+  EXPECT_FALSE(fs::exists(out / "animation.mp4"));
+  EXPECT_FALSE(fs::exists(out / "manifest.json"));
+  EXPECT_TRUE(temporaries(out).empty());
+
+  // Cancelled from the start: nothing drawn.
+  const fs::path none = fresh("cancel-at-once");
+  run.directory = none;
+  run.progress = nullptr;
+  run.cancel = [] { return true; };
+  const ProductionReport stopped = frep::mapping::produce(inputs(mapping_text(false, 4)), run);
+  EXPECT_EQ(stopped.status, ProductionReport::Status::Cancelled);
+  EXPECT_FALSE(fs::exists(none / "frames" / "frame_00000.png"));
+}
+
+TEST(Production, MappedObjectPrefersTheRequestThenTheMapping)
+{
+  frep::mapping::Spec spec;
+  spec.object = "meta5d";
+  EXPECT_EQ(frep::mapping::mapped_object(spec, "cat"), "cat");
+  EXPECT_EQ(frep::mapping::mapped_object(spec, ""), "meta5d");
+  EXPECT_EQ(frep::mapping::mapped_object(frep::mapping::Spec{}, ""), "");
+}
+
+} // namespace

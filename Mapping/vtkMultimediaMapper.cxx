@@ -2,7 +2,7 @@
 
 #include "vtkMultimediaMapping.h"
 
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/section_mesh.h"
 #include "Media/tone_synthesis.h"
 

@@ -1,7 +1,7 @@
 #include "vtkMultimediaMapping.h"
 
 #include "Durable/atomic_output.h"
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
 #include "vtkObjectFactory.h"
 

@@ -20,7 +20,7 @@
 #include "FRepKitMappingModule.h" // for export macro
 #include "vtkObject.h"
 
-#include "Plan/mapping_spec.h" // for frep::mapping::Spec
+#include "Mapping/mapping_spec.h" // for frep::mapping::Spec
 
 #include <string> // for std::string
 #include <vector> // for std::vector

@@ -2,7 +2,7 @@
 
 #include "DurableSave.h"
 
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 #include "Production/production.h"
 #include "shape_files.h"
 

@@ -6,7 +6,7 @@
 // OUT/.frepstudio/ (model.hf, mapping.json), so `frepkit map` can repeat the export.
 #pragma once
 
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_spec.h"
 #include "UserInputs.h"
 
 #include "Compiler/load_model.h"

@@ -5,7 +5,7 @@
 // and every field the editor does not show is kept as it was read.
 #pragma once
 
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
 #include <QWidget>
 

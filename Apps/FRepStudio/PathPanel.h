@@ -6,7 +6,7 @@
 // when the animation pauses (the main window's rest timer).
 #pragma once
 
-#include "Plan/path.h"
+#include "Mapping/path.h"
 
 #include <QTimer>
 #include <QWidget>

@@ -6,7 +6,7 @@
 #include "shape_files.h"
 #include "user_error.h"
 
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 #include "Production/production.h"
 
 #include <CLI/CLI.hpp>

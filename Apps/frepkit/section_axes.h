@@ -1,7 +1,7 @@
 // Which model coordinates x[1..n] drive the axes of a mesh, contour or image, and which are fixed:
 // `--axes X,Y,Z,0.25` (mesh; hfp's -x; formerly --map), `--fix x4=0.5 --free x1,x2` (slice,
 // render), or the default (the first coordinates drive the axes, any others are fixed at 0).
-// (Not a "mapping": that word names the multimedia mapping, Multimedia/Plan.)
+// (Not a "mapping": that word names the multimedia mapping, Multimedia/Mapping.)
 #pragma once
 
 #include "Compiler/model.h"

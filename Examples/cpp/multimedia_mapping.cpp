@@ -4,8 +4,8 @@
 // meshed and measured, and the spreadsheet is drawn headless into a PPM picture.
 //
 //   build/bin/frep_example_multimedia_mapping Examples/mapping/morph4d.hf spreadsheet.ppm
-#include "Plan/mapping_plan.h"
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/mapping_spec.h"
 #include "Scene/framing.h"
 #include "Scene/pictures.h"
 #include "Scene/section_mesh.h"

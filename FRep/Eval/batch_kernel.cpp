@@ -158,6 +158,148 @@ FREP_ALWAYS_INLINE void call_lanes(const Tape& tape,
     }                                                                                          \
   }
 
+/// The operations of the C library and the HyperFun library (Exp .. Fmod, Hf*): libm one call
+/// per lane (no vector libm: it would not give the same bits), the Hf* rules lane by lane.
+FREP_ALWAYS_INLINE void library_lanes(
+  const Instruction& ins, double* o, const double* x, const double* y, int n)
+{
+  switch (ins.op)
+  {
+    case Opcode::Exp:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::exp(x[i]);
+      break;
+    case Opcode::Log:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::log(x[i]);
+      break;
+    case Opcode::Log10:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::log10(x[i]);
+      break;
+    case Opcode::Sin:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::sin(x[i]);
+      break;
+    case Opcode::Cos:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::cos(x[i]);
+      break;
+    case Opcode::Tan:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::tan(x[i]);
+      break;
+    case Opcode::Asin:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::asin(x[i]);
+      break;
+    case Opcode::Acos:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::acos(x[i]);
+      break;
+    case Opcode::Atan:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::atan(x[i]);
+      break;
+    case Opcode::Sinh:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::sinh(x[i]);
+      break;
+    case Opcode::Cosh:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::cosh(x[i]);
+      break;
+    case Opcode::Tanh:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::tanh(x[i]);
+      break;
+    case Opcode::Atan2:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::atan2(x[i], y[i]);
+      break;
+    case Opcode::Pow:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::pow(x[i], y[i]);
+      break;
+    case Opcode::Frac:
+      for (int i = 0; i < n; ++i)
+        o[i] = frac(x[i]);
+      break;
+    case Opcode::Fmod:
+      for (int i = 0; i < n; ++i)
+        o[i] = std::fmod(x[i], y[i]);
+      break;
+    case Opcode::HfPow:
+      hf_pow_lanes(o, x, y, n);
+      break;
+    case Opcode::HfPowInt:
+      if (!pow_int_unrolled(ins.index, o, x, n))
+      {
+        hf_pow_int_lanes(o, x, ins.index, n);
+      }
+      break;
+    case Opcode::HfMod:
+      hf_mod_lanes(o, x, y, n);
+      break;
+    case Opcode::HfRound:
+      hf_round_lanes(o, x, n);
+      break;
+    default:
+      break; // not a library operation: never called so
+  }
+}
+
+/// Comparisons (HyperFun's EPS for = and <>), the logical operations on truth values and
+/// Select, lane by lane; `side`: which operand of a comparison is the immediate (BatchProgram).
+FREP_ALWAYS_INLINE void logic_lanes(const Instruction& ins, Immediate side, double* o,
+  const double* x, const double* y, const double* z, int n)
+{
+  switch (ins.op)
+  {
+    case Opcode::Eq:
+      FREP_LANES o[i] = std::fabs(x[i] - y[i]) < hf::kEps ? 1.0 : 0.0;
+      break;
+    case Opcode::Ne:
+      FREP_LANES o[i] = std::fabs(x[i] - y[i]) >= hf::kEps ? 1.0 : 0.0;
+      break;
+    case Opcode::Lt:
+      FREP_BINARY(l < r ? 1.0 : 0.0)
+      break;
+    case Opcode::Le:
+      FREP_BINARY(l <= r ? 1.0 : 0.0)
+      break;
+    case Opcode::Gt:
+      FREP_BINARY(l > r ? 1.0 : 0.0)
+      break;
+    case Opcode::Ge:
+      FREP_BINARY(l >= r ? 1.0 : 0.0)
+      break;
+    case Opcode::Truthy:
+      FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 1.0 : 0.0;
+      break;
+    case Opcode::And:
+      FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) & (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
+      break;
+    case Opcode::Or:
+      FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) | (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
+      break;
+    case Opcode::Not:
+      FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 0.0 : 1.0;
+      break;
+    case Opcode::Select:
+      FREP_LANES
+      {
+        // both loads unconditional, so the choice is a blend
+        const double t = y[i];
+        const double f = z[i];
+        o[i] = x[i] != 0.0 ? t : f;
+      }
+      break;
+    default:
+      break; // not a logical operation: never called so
+  }
+}
+
 FREP_ALWAYS_INLINE void run_block_body(
   const Tape& tape, const BatchProgram& program, const Block& blk, CallState& calls)
 {
@@ -213,63 +355,6 @@ FREP_ALWAYS_INLINE void run_block_body(
       case Opcode::Sqrt:
         FREP_LANES o[i] = std::sqrt(x[i]);
         break;
-      // libm: one call per lane (no vector libm: it would not give the same bits)
-      case Opcode::Exp:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::exp(x[i]);
-        break;
-      case Opcode::Log:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::log(x[i]);
-        break;
-      case Opcode::Log10:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::log10(x[i]);
-        break;
-      case Opcode::Sin:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::sin(x[i]);
-        break;
-      case Opcode::Cos:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::cos(x[i]);
-        break;
-      case Opcode::Tan:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::tan(x[i]);
-        break;
-      case Opcode::Asin:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::asin(x[i]);
-        break;
-      case Opcode::Acos:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::acos(x[i]);
-        break;
-      case Opcode::Atan:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::atan(x[i]);
-        break;
-      case Opcode::Sinh:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::sinh(x[i]);
-        break;
-      case Opcode::Cosh:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::cosh(x[i]);
-        break;
-      case Opcode::Tanh:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::tanh(x[i]);
-        break;
-      case Opcode::Atan2:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::atan2(x[i], y[i]);
-        break;
-      case Opcode::Pow:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::pow(x[i], y[i]);
-        break;
       case Opcode::Floor:
         FREP_LANES o[i] = std::floor(x[i]);
         break;
@@ -279,28 +364,27 @@ FREP_ALWAYS_INLINE void run_block_body(
       case Opcode::Trunc:
         FREP_LANES o[i] = std::trunc(x[i]);
         break;
+      case Opcode::Exp:
+      case Opcode::Log:
+      case Opcode::Log10:
+      case Opcode::Sin:
+      case Opcode::Cos:
+      case Opcode::Tan:
+      case Opcode::Asin:
+      case Opcode::Acos:
+      case Opcode::Atan:
+      case Opcode::Sinh:
+      case Opcode::Cosh:
+      case Opcode::Tanh:
+      case Opcode::Atan2:
+      case Opcode::Pow:
       case Opcode::Frac:
-        for (int i = 0; i < n; ++i)
-          o[i] = frac(x[i]);
-        break;
       case Opcode::Fmod:
-        for (int i = 0; i < n; ++i)
-          o[i] = std::fmod(x[i], y[i]);
-        break;
       case Opcode::HfPow:
-        hf_pow_lanes(o, x, y, n);
-        break;
       case Opcode::HfPowInt:
-        if (!pow_int_unrolled(ins.index, o, x, n))
-        {
-          hf_pow_int_lanes(o, x, ins.index, n);
-        }
-        break;
       case Opcode::HfMod:
-        hf_mod_lanes(o, x, y, n);
-        break;
       case Opcode::HfRound:
-        hf_round_lanes(o, x, n);
+        library_lanes(ins, o, x, y, n);
         break;
       case Opcode::Max:
         FREP_BINARY(hf::hf_max(l, r))
@@ -321,43 +405,17 @@ FREP_ALWAYS_INLINE void run_block_body(
         FREP_BINARY(hf::intersect_plain(l, r))
         break;
       case Opcode::Eq:
-        FREP_LANES o[i] = std::fabs(x[i] - y[i]) < hf::kEps ? 1.0 : 0.0;
-        break;
       case Opcode::Ne:
-        FREP_LANES o[i] = std::fabs(x[i] - y[i]) >= hf::kEps ? 1.0 : 0.0;
-        break;
       case Opcode::Lt:
-        FREP_BINARY(l < r ? 1.0 : 0.0)
-        break;
       case Opcode::Le:
-        FREP_BINARY(l <= r ? 1.0 : 0.0)
-        break;
       case Opcode::Gt:
-        FREP_BINARY(l > r ? 1.0 : 0.0)
-        break;
       case Opcode::Ge:
-        FREP_BINARY(l >= r ? 1.0 : 0.0)
-        break;
       case Opcode::Truthy:
-        FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 1.0 : 0.0;
-        break;
       case Opcode::And:
-        FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) & (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
-        break;
       case Opcode::Or:
-        FREP_LANES o[i] = (std::fabs(x[i]) >= hf::kEps) | (std::fabs(y[i]) >= hf::kEps) ? 1.0 : 0.0;
-        break;
       case Opcode::Not:
-        FREP_LANES o[i] = std::fabs(x[i]) >= hf::kEps ? 0.0 : 1.0;
-        break;
       case Opcode::Select:
-        FREP_LANES
-        {
-          // both loads unconditional, so the choice is a blend
-          const double t = y[i];
-          const double f = z[i];
-          o[i] = x[i] != 0.0 ? t : f;
-        }
+        logic_lanes(ins, side, o, x, y, z, n);
         break;
       case Opcode::ErrorIf:
       {

@@ -625,6 +625,207 @@ HOT_RULE Choice min_choice(const Range& a, const Range& b)
   return Choice::Keep;
 }
 
+/// The enclosure of a logical operation's result on truth values (0 or 1 where decided).
+HOT_RULE Range enclose_logic(Opcode op, const Range& a, const Range& b)
+{
+  switch (op)
+  {
+    case Opcode::Truthy:
+      return boolean(may_be_truthy(a), may_be_falsy(a));
+    case Opcode::Not:
+      return boolean(may_be_falsy(a), may_be_truthy(a));
+    case Opcode::And:
+      return boolean(may_be_truthy(a) && may_be_truthy(b), may_be_falsy(a) || may_be_falsy(b));
+    case Opcode::Or:
+      return boolean(may_be_truthy(a) || may_be_truthy(b), may_be_falsy(a) && may_be_falsy(b));
+    default:
+      return whole(true); // not a logical operation: never called so
+  }
+}
+
+/// The enclosure of a C or HyperFun library function's result (exp .. tanh, atan2, pow, the
+/// rounding functions, the hf* operators).
+HOT_RULE Range enclose_library(const Instruction& ins, const Range& a, const Range& b)
+{
+  Range r;
+  switch (ins.op)
+  {
+    case Opcode::Exp:
+      r = increasing(a, [](double x) { return std::exp(x); });
+      r.v.lo = std::max(r.v.lo, 0.0);
+      return r;
+    case Opcode::Log:
+      return increasing(a, [](double x) { return std::log(x); }, 0.0);
+    case Opcode::Log10:
+      return increasing(a, [](double x) { return std::log10(x); }, 0.0);
+    case Opcode::Sin:
+      return trig(a, [](double x) { return std::sin(x); }, kPi / 2, -kPi / 2);
+    case Opcode::Cos:
+      return trig(a, [](double x) { return std::cos(x); }, 0.0, kPi);
+    case Opcode::Tan:
+      return tangent(a);
+    case Opcode::Asin:
+      return increasing(a, [](double x) { return std::asin(x); }, -1.0, 1.0);
+    case Opcode::Acos:
+      r = decreasing(a, [](double x) { return std::acos(x); }, -1.0, 1.0);
+      r.v.lo = std::max(r.v.lo, 0.0);
+      return r;
+    case Opcode::Atan:
+      return increasing(a, [](double x) { return std::atan(x); });
+    case Opcode::Sinh:
+      return increasing(a, [](double x) { return std::sinh(x); });
+    case Opcode::Cosh:
+      return hyperbolic_cosine(a);
+    case Opcode::Tanh:
+      return clamp(increasing(a, [](double x) { return std::tanh(x); }), -1, 1);
+    case Opcode::Atan2:
+      return { { down(-kPi), up(kPi) }, a.nan || b.nan };
+    case Opcode::Pow:
+      return c_pow(a, b);
+    case Opcode::Floor:
+      return step(a, [](double x) { return std::floor(x); });
+    case Opcode::Ceil:
+      return step(a, [](double x) { return std::ceil(x); });
+    case Opcode::Trunc:
+      return step(a, [](double x) { return std::trunc(x); });
+    case Opcode::Frac:
+      return fractional(a);
+    case Opcode::Fmod:
+      return remainder(a, b);
+    case Opcode::HfPow:
+      return hf_pow_range(a, b);
+    case Opcode::HfPowInt:
+      return hf_pow_int_op(a, ins.index);
+    case Opcode::HfMod:
+      return remainder(hf_round_range(a), hf_round_range(b));
+    case Opcode::HfRound:
+      return hf_round_range(a);
+    default:
+      return whole(true); // not a library function: never called so
+  }
+}
+
+/// The enclosure `r` of one instruction's result from its operands' (`get` reads Select's
+/// third), and what the box decides for max, min and Select (`choice`, when not null; the
+/// simplifier's, tape_simplifier.h). Input, ErrorIf and Call are the evaluation loop's own.
+/// Inlined (HOT_RULE), with the common operations in this one switch: written in the loop, as
+/// before, it measured the same (Benchmarks/README.md, "Long functions split").
+template<class Get>
+HOT_RULE void enclose_operation(const Instruction& ins, const Range& a, const Range& b,
+  const Get& get, Choice* choice, Range& r)
+{
+  switch (ins.op)
+  {
+    case Opcode::Const:
+      r = std::isnan(ins.imm) ? whole(true) : Range{ Interval::point(ins.imm), false };
+      break;
+    case Opcode::Add:
+      r = add(a, b);
+      break;
+    case Opcode::Sub:
+      r = sub(a, b);
+      break;
+    case Opcode::Mul:
+      r = mul(a, b);
+      break;
+    case Opcode::Div:
+      r = div(a, b);
+      break;
+    case Opcode::Neg:
+      r = { { -a.v.hi, -a.v.lo }, a.nan };
+      break;
+    case Opcode::Square:
+      r = square(a);
+      break;
+    case Opcode::Abs:
+      r = absolute(a);
+      break;
+    case Opcode::Sqrt:
+      if (a.v.hi < 0)
+      {
+        r = whole(true);
+        break;
+      }
+      r = rounded(std::sqrt(std::max(a.v.lo, 0.0)), std::sqrt(a.v.hi), a.nan || a.v.lo < 0);
+      r.v.lo = std::max(r.v.lo, 0.0);
+      break;
+    case Opcode::Max:
+      r = max_min(a, b, true);
+      if (choice)
+      {
+        *choice = max_choice(a, b);
+      }
+      break;
+    case Opcode::Min:
+      r = max_min(a, b, false);
+      if (choice)
+      {
+        *choice = min_choice(a, b);
+      }
+      break;
+    case Opcode::Union:
+      r = r_function<true, false>(a, b);
+      break;
+    case Opcode::Intersect:
+      r = r_function<false, false>(a, b);
+      break;
+    case Opcode::UnionPlain:
+      r = r_function<true, true>(a, b);
+      break;
+    case Opcode::IntersectPlain:
+      r = r_function<false, true>(a, b);
+      break;
+    case Opcode::Eq:
+    case Opcode::Ne:
+    {
+      // The point computes fabs(a - b): enclose the rounded difference, then decide.
+      const Range d = sub(a, b);
+      // NaN differences make both |d| < EPS and |d| >= EPS false.
+      const bool small = d.v.lo < hf::kEps && d.v.hi > -hf::kEps;
+      const bool large = d.v.hi >= hf::kEps || d.v.lo <= -hf::kEps;
+      r = ins.op == Opcode::Eq ? boolean(small, large || d.nan) : boolean(large, small || d.nan);
+      break;
+    }
+    case Opcode::Lt:
+      r = boolean(a.v.lo < b.v.hi, a.nan || b.nan || a.v.hi >= b.v.lo);
+      break;
+    case Opcode::Le:
+      r = boolean(a.v.lo <= b.v.hi, a.nan || b.nan || a.v.hi > b.v.lo);
+      break;
+    case Opcode::Gt:
+      r = boolean(a.v.hi > b.v.lo, a.nan || b.nan || a.v.lo <= b.v.hi);
+      break;
+    case Opcode::Ge:
+      r = boolean(a.v.hi >= b.v.lo, a.nan || b.nan || a.v.lo < b.v.hi);
+      break;
+    case Opcode::Truthy:
+    case Opcode::Not:
+    case Opcode::And:
+    case Opcode::Or:
+      r = enclose_logic(ins.op, a, b);
+      break;
+    case Opcode::Select:
+    {
+      const Range c = get(ins.c);
+      const bool take_b = may_be_nonzero(a);
+      const bool take_c = may_be_zero(a);
+      r = take_b && take_c ? hull(b, c) : (take_b ? b : c);
+      if (choice && take_b != take_c)
+      {
+        *choice = take_b ? Choice::TakeB : Choice::TakeC;
+      }
+      break;
+    }
+    case Opcode::Input:
+    case Opcode::ErrorIf:
+    case Opcode::Call:
+      break; // the loop's own
+    default:
+      r = enclose_library(ins, a, b);
+      break;
+  }
+}
+
 /// An opaque call with an enclosure form of its own (a user function's): its outputs over the
 /// box of its inputs' ranges. False (the caller takes the whole line) when it has none, or an
 /// input may be NaN (what the function makes of NaN is unknown).
@@ -880,198 +1081,7 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
       continue;
     }
     Range r;
-    switch (op)
-    {
-      case Opcode::Const:
-        r = std::isnan(ins.imm) ? whole(true) : Range{ Interval::point(ins.imm), false };
-        break;
-      case Opcode::Add:
-        r = add(a, b);
-        break;
-      case Opcode::Sub:
-        r = sub(a, b);
-        break;
-      case Opcode::Mul:
-        r = mul(a, b);
-        break;
-      case Opcode::Div:
-        r = div(a, b);
-        break;
-      case Opcode::Neg:
-        r = { { -a.v.hi, -a.v.lo }, a.nan };
-        break;
-      case Opcode::Square:
-        r = square(a);
-        break;
-      case Opcode::Abs:
-        r = absolute(a);
-        break;
-      case Opcode::Sqrt:
-        if (a.v.hi < 0)
-        {
-          r = whole(true);
-        }
-        else
-        {
-          r = rounded(std::sqrt(std::max(a.v.lo, 0.0)), std::sqrt(a.v.hi), a.nan || a.v.lo < 0);
-          r.v.lo = std::max(r.v.lo, 0.0);
-        }
-        break;
-      case Opcode::Exp:
-        r = increasing(a, [](double x) { return std::exp(x); });
-        r.v.lo = std::max(r.v.lo, 0.0);
-        break;
-      case Opcode::Log:
-        r = increasing(
-          a, [](double x) { return std::log(x); }, 0.0);
-        break;
-      case Opcode::Log10:
-        r = increasing(
-          a, [](double x) { return std::log10(x); }, 0.0);
-        break;
-      case Opcode::Sin:
-        r = trig(
-          a, [](double x) { return std::sin(x); }, kPi / 2, -kPi / 2);
-        break;
-      case Opcode::Cos:
-        r = trig(
-          a, [](double x) { return std::cos(x); }, 0.0, kPi);
-        break;
-      case Opcode::Tan:
-        r = tangent(a);
-        break;
-      case Opcode::Asin:
-        r = increasing(
-          a, [](double x) { return std::asin(x); }, -1.0, 1.0);
-        break;
-      case Opcode::Acos:
-        r = decreasing(
-          a, [](double x) { return std::acos(x); }, -1.0, 1.0);
-        r.v.lo = std::max(r.v.lo, 0.0);
-        break;
-      case Opcode::Atan:
-        r = increasing(a, [](double x) { return std::atan(x); });
-        break;
-      case Opcode::Sinh:
-        r = increasing(a, [](double x) { return std::sinh(x); });
-        break;
-      case Opcode::Cosh:
-        r = hyperbolic_cosine(a);
-        break;
-      case Opcode::Tanh:
-        r = clamp(increasing(a, [](double x) { return std::tanh(x); }), -1, 1);
-        break;
-      case Opcode::Atan2:
-        r = { { down(-kPi), up(kPi) }, a.nan || b.nan };
-        break;
-      case Opcode::Pow:
-        r = c_pow(a, b);
-        break;
-      case Opcode::Floor:
-        r = step(a, [](double x) { return std::floor(x); });
-        break;
-      case Opcode::Ceil:
-        r = step(a, [](double x) { return std::ceil(x); });
-        break;
-      case Opcode::Trunc:
-        r = step(a, [](double x) { return std::trunc(x); });
-        break;
-      case Opcode::Frac:
-        r = fractional(a);
-        break;
-      case Opcode::Fmod:
-        r = remainder(a, b);
-        break;
-      case Opcode::HfPow:
-        r = hf_pow_range(a, b);
-        break;
-      case Opcode::HfPowInt:
-        r = hf_pow_int_op(a, ins.index);
-        break;
-      case Opcode::HfMod:
-        r = remainder(hf_round_range(a), hf_round_range(b));
-        break;
-      case Opcode::HfRound:
-        r = hf_round_range(a);
-        break;
-      case Opcode::Max:
-        r = max_min(a, b, true);
-        if (choices)
-        {
-          choices[at] = max_choice(a, b);
-        }
-        break;
-      case Opcode::Min:
-        r = max_min(a, b, false);
-        if (choices)
-        {
-          choices[at] = min_choice(a, b);
-        }
-        break;
-      case Opcode::Union:
-        r = r_function<true, false>(a, b);
-        break;
-      case Opcode::Intersect:
-        r = r_function<false, false>(a, b);
-        break;
-      case Opcode::UnionPlain:
-        r = r_function<true, true>(a, b);
-        break;
-      case Opcode::IntersectPlain:
-        r = r_function<false, true>(a, b);
-        break;
-      case Opcode::Eq:
-      case Opcode::Ne:
-      {
-        // The point computes fabs(a - b): enclose the rounded difference, then decide.
-        const Range d = sub(a, b);
-        // NaN differences make both |d| < EPS and |d| >= EPS false.
-        const bool small = d.v.lo < hf::kEps && d.v.hi > -hf::kEps;
-        const bool large = d.v.hi >= hf::kEps || d.v.lo <= -hf::kEps;
-        r = op == Opcode::Eq ? boolean(small, large || d.nan) : boolean(large, small || d.nan);
-        break;
-      }
-      case Opcode::Lt:
-        r = boolean(a.v.lo < b.v.hi, a.nan || b.nan || a.v.hi >= b.v.lo);
-        break;
-      case Opcode::Le:
-        r = boolean(a.v.lo <= b.v.hi, a.nan || b.nan || a.v.hi > b.v.lo);
-        break;
-      case Opcode::Gt:
-        r = boolean(a.v.hi > b.v.lo, a.nan || b.nan || a.v.lo <= b.v.hi);
-        break;
-      case Opcode::Ge:
-        r = boolean(a.v.hi >= b.v.lo, a.nan || b.nan || a.v.lo < b.v.hi);
-        break;
-      case Opcode::Truthy:
-        r = boolean(may_be_truthy(a), may_be_falsy(a));
-        break;
-      case Opcode::Not:
-        r = boolean(may_be_falsy(a), may_be_truthy(a));
-        break;
-      case Opcode::And:
-        r = boolean(may_be_truthy(a) && may_be_truthy(b), may_be_falsy(a) || may_be_falsy(b));
-        break;
-      case Opcode::Or:
-        r = boolean(may_be_truthy(a) || may_be_truthy(b), may_be_falsy(a) && may_be_falsy(b));
-        break;
-      case Opcode::Select:
-      {
-        const Range c = get(ins.c);
-        const bool take_b = may_be_nonzero(a);
-        const bool take_c = may_be_zero(a);
-        r = take_b && take_c ? hull(b, c) : (take_b ? b : c);
-        if (choices && take_b != take_c)
-        {
-          choices[at] = take_b ? Choice::TakeB : Choice::TakeC;
-        }
-        break;
-      }
-      case Opcode::Input:
-      case Opcode::ErrorIf:
-      case Opcode::Call:
-        break; // handled above
-    }
+    enclose_operation(ins, a, b, get, choices ? choices + at : nullptr, r);
     if (choices && boolean_by_opcode[static_cast<std::size_t>(op)] && r.v.lo == r.v.hi)
     {
       choices[at] = r.v.lo != 0.0 ? Choice::True : Choice::False;

@@ -1,7 +1,7 @@
 // produce, phase 6: the animation frames, resumable.
 #include "Production/detail/phases.h"
 
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
 #include <cstdio>
 #include <fstream>

@@ -21,7 +21,7 @@
 // cancelled or fails keeps the files it finished and leaves no temporary behind.
 #pragma once
 
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_spec.h"
 
 #include "Compiler/model.h"
 #include "Eval/run_control.h"

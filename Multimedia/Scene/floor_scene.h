@@ -9,8 +9,8 @@
 // solid's raycast::lowest_z) is on the board, so no shape floats above its shadow.
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/mapping_spec.h"
 #include "Scene/framing.h"
 #include "Scene/section_mesh.h"
 

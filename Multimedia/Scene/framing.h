@@ -9,8 +9,8 @@
 // size and the shape's anchor) change. A render.view_box in the mapping wins over all this.
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/mapping_spec.h"
 
 #include "Imaging/camera.h"
 

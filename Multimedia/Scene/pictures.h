@@ -6,7 +6,7 @@
 // the path picture.
 #pragma once
 
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/framing.h"
 #include "Scene/section_mesh.h"
 

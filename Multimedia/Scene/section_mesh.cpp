@@ -1,7 +1,7 @@
 #include "Scene/section_mesh.h"
 
-#include "Plan/colour_maps.h"
-#include "Plan/unit_map.h"
+#include "Mapping/colour_maps.h"
+#include "Mapping/unit_map.h"
 #include "Render/normal_matrix.h"
 
 #include "Compiler/attribute_rgb.h"

@@ -6,8 +6,8 @@
 // `frepkit map`, so both produce the same geometry.
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/unit_map.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/unit_map.h"
 
 #include "Compiler/model.h"
 #include "Eval/run_control.h"

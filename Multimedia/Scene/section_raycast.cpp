@@ -2,8 +2,8 @@
 
 #include "Scene/section_mesh.h"
 
-#include "Plan/colour_maps.h"
-#include "Plan/unit_map.h"
+#include "Mapping/colour_maps.h"
+#include "Mapping/unit_map.h"
 
 
 #include <algorithm>

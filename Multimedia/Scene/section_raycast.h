@@ -5,7 +5,7 @@
 // anything else `raycast_supported` says why and callers mesh instead.
 #pragma once
 
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_plan.h"
 
 #include "Raycast/raycast.h"
 #include "Imaging/camera.h"

@@ -1,10 +1,10 @@
-// Fuzz harness (c): the mapping file loader and the planner (Multimedia/Plan) on arbitrary text.
+// Fuzz harness (c): the mapping file loader and the planner (Multimedia/Mapping) on arbitrary text.
 // Properties: load_mapping never throws and either succeeds or names at least one error, each
 // with a message; a loaded spec saves and loads back to the same spec, as mapping_json.h
 // promises; make_plan never throws, against a 3-D, a 4-D and a 6-D model, and reports errors
 // with messages, or a plan whose frames and cells match what it says it has.
-#include "Plan/mapping_json.h"
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_json.h"
+#include "Mapping/mapping_plan.h"
 #include "fuzz_check.h"
 
 #include <algorithm>

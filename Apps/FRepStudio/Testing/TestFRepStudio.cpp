@@ -10,7 +10,7 @@
 #include "MappingEditor.h"
 #include "ModelAnalysis.h"
 #include "PathPanel.h"
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 #include "ScreenshotCapture.h"
 #include "SectionView.h"
 #include "SpreadsheetPanel.h"

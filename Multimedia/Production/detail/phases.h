@@ -15,7 +15,7 @@
 
 #include "Production/production.h"
 
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/floor_scene.h"
 #include "Scene/framing.h"
 #include "Scene/pictures.h"

@@ -4,7 +4,7 @@
 // the same inputs), and cancelling (what finished kept, no temporary, no movie).
 #include "Production/production.h"
 
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
 #include "Compiler/load_model.h"
 

@@ -3,8 +3,8 @@
 // the ball (2 - r) above the board (the box's bottom is on it); stand_on_floor puts the lowest
 // point of the meshed section (its lowest vertex) and of the ray-cast solid (raycast::lowest_z)
 // on the board, the gap left well under a pixel of the scene's camera at the contact point.
-#include "Plan/mapping_json.h"
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_json.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/floor_scene.h"
 #include "Scene/section_mesh.h"
 #include "Scene/section_raycast.h"

@@ -7,8 +7,8 @@
 // place the shape goes; a cylindrical world (no rays) is framed by its solid's box; a 2-D
 // section's contour is framed too; the floor scene's board is sized by the ball, which stands
 // on it in the picture.
-#include "Plan/mapping_json.h"
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_json.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/floor_scene.h"
 #include "Scene/framing.h"
 #include "Scene/pictures.h"

@@ -3,8 +3,8 @@
 // target mirrors the shape and the triangles are turned so it stays outward (positive volume);
 // a scale transformation multiplies the volume by the cube; a world-coordinate colour channel
 // colours the points by their coordinate; bad samples are errors, not crashes.
-#include "Plan/mapping_json.h"
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_json.h"
+#include "Mapping/mapping_plan.h"
 #include "Scene/section_mesh.h"
 
 #include "Compiler/model.h"

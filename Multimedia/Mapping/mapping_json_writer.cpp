@@ -1,8 +1,8 @@
 // The mapping file's writer: save_mapping, in the layout a hand-written file has. The reader is
 // mapping_json_reader.cpp.
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
-#include "Plan/detail/mapping_json_names.h"
+#include "Mapping/detail/mapping_json_names.h"
 
 #include <algorithm>
 #include <string>

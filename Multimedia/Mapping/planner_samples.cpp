@@ -1,8 +1,8 @@
 // The Planner's samples: the spreadsheet's cells, the animation's frames and the still shape,
 // each with its channels applied.
-#include "Plan/detail/planner.h"
+#include "Mapping/detail/planner.h"
 
-#include "Plan/colour_maps.h"
+#include "Mapping/colour_maps.h"
 
 #include <algorithm>
 #include <cmath>

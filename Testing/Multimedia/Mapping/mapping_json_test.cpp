@@ -1,4 +1,4 @@
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
 #include "example_mapping.h"
 

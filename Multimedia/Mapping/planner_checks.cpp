@@ -1,5 +1,5 @@
 // The Planner's checks of the world, the spreadsheet, the animation and the renderer.
-#include "Plan/detail/planner.h"
+#include "Mapping/detail/planner.h"
 
 #include <algorithm>
 #include <cmath>

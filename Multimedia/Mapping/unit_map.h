@@ -3,7 +3,7 @@
 // the engine and shared (immutable) between copies and threads.
 #pragma once
 
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_spec.h"
 
 #include <memory>
 #include <string>

@@ -1,8 +1,8 @@
 // The Planner's channels: each resolved (range, target, map), the placing channels (world,
 // dynamic, spreadsheet, fixed) checked, and the values of the others.
-#include "Plan/detail/planner.h"
+#include "Mapping/detail/planner.h"
 
-#include "Plan/colour_maps.h"
+#include "Mapping/colour_maps.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // the audio synthesis need, computed once; no VTK, no evaluation of the model.
 #pragma once
 
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_spec.h"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "Plan/unit_map.h"
+#include "Mapping/unit_map.h"
 
 #include <gtest/gtest.h>
 

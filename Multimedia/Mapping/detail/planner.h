@@ -1,13 +1,13 @@
-// The Planner behind make_plan (mapping_plan.cpp), private to FRepKit::Plan: the class and the
+// The Planner behind make_plan (mapping_plan.cpp), private to FRepKit::MultimediaMapping: the class and the
 // helpers its parts share. Its work is in three files, in the order make_plan runs it:
 // planner_channels.cpp (every channel resolved, the placing channels checked),
 // planner_checks.cpp (world, spreadsheet, animation, renderer), planner_samples.cpp (the cells
 // and frames filled, only when nothing is wrong).
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/path.h"
-#include "Plan/unit_map.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/path.h"
+#include "Mapping/unit_map.h"
 
 #include <array>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "Plan/colour_maps.h"
+#include "Mapping/colour_maps.h"
 
 #include <algorithm>
 #include <cmath>

@@ -35,8 +35,8 @@
 // are errors: a typo must not be silently ignored.
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/mapping_spec.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "Plan/path.h"
+#include "Mapping/path.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The names the mapping file uses for the spec's enumerations, shared by its reader
-// (mapping_json_reader.cpp) and its writer (mapping_json_writer.cpp). Private to FRepKit::Plan.
+// (mapping_json_reader.cpp) and its writer (mapping_json_writer.cpp). Private to FRepKit::MultimediaMapping.
 #pragma once
 
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_spec.h"
 
 #include <nlohmann/json.hpp>
 

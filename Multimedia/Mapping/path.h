@@ -4,8 +4,8 @@
 // the spec's `Path` (the description it is built from).
 #pragma once
 
-#include "Plan/mapping_plan.h"
-#include "Plan/mapping_spec.h"
+#include "Mapping/mapping_plan.h"
+#include "Mapping/mapping_spec.h"
 
 #include <cstddef>
 #include <vector>

@@ -1,5 +1,5 @@
-#include "Plan/mapping_json.h"
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_json.h"
+#include "Mapping/mapping_plan.h"
 
 #include "example_mapping.h"
 

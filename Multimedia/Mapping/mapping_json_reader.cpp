@@ -1,11 +1,11 @@
 // The mapping file's reader: load_mapping, section by section, every problem reported at its
 // place in the document. The writer is mapping_json_writer.cpp.
-#include "Plan/mapping_json.h"
+#include "Mapping/mapping_json.h"
 
-#include "Plan/detail/mapping_json_names.h"
-#include "Plan/colour_maps.h"
-#include "Plan/path.h"
-#include "Plan/unit_map.h"
+#include "Mapping/detail/mapping_json_names.h"
+#include "Mapping/colour_maps.h"
+#include "Mapping/path.h"
+#include "Mapping/unit_map.h"
 
 #include <algorithm>
 #include <cmath>

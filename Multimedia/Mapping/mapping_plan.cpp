@@ -2,9 +2,9 @@
 // spreadsheet cells and the animation frames. The order of the work: resolve every channel
 // (range, target, map), check the placing channels (world, dynamic, spreadsheet, fixed), then,
 // only when nothing is wrong, fill the samples.
-#include "Plan/mapping_plan.h"
+#include "Mapping/mapping_plan.h"
 
-#include "Plan/detail/planner.h"
+#include "Mapping/detail/planner.h"
 
 #include <algorithm>
 #include <cmath>

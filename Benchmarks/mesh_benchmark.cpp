@@ -74,10 +74,8 @@ struct Run
 Run run_frepkit(const std::shared_ptr<const frep::Tape>& tape, const frep::bench::BenchModel& m,
   int n, bool simplify, bool jit, bool& closed)
 {
-  frep::mesh::Grid grid;
-  grid.lo = m.lo;
-  grid.hi = m.hi;
-  grid.samples = { n, n, n };
+  const std::array<std::int64_t, 3> samples{ n, n, n };
+  const frep::GridSpec grid = frep::box_grid(m.lo, m.hi, samples);
   const auto start = Clock::now();
   const std::clock_t cpu_start = std::clock();
   frep::mesh::ExtractOptions options;

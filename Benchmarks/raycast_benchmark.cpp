@@ -123,8 +123,7 @@ int main(int argc, char** argv)
 
   // Meshed and rasterised.
   auto t0 = Clock::now();
-  frep::mesh::Grid g;
-  g.samples = { grid, grid, grid };
+  const frep::GridSpec g{ { { -10, 10, grid }, { -10, 10, grid }, { -10, 10, grid } } };
   frep::mesh::ExtractOptions eo;
   eo.threads = threads;
   const frep::mesh::ExtractResult m = frep::mesh::extract_surface(tape, g, eo);

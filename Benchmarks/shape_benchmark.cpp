@@ -156,12 +156,10 @@ int main(int argc, char** argv)
   {
     return 1;
   }
-  frep::mesh::Grid grid;
+  frep::GridSpec grid;
   for (int k = 0; k < 3; ++k)
   {
-    grid.lo[k] = box[2 * k];
-    grid.hi[k] = box[2 * k + 1];
-    grid.samples[k] = n;
+    grid.axes.push_back({ box[2 * k], box[2 * k + 1], n });
   }
   frep::mesh::ExtractOptions options;
   options.normals = false; // as flying edges computes none below

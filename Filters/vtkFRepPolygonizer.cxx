@@ -123,13 +123,13 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
     return 1;
   }
 
-  frep::mesh::Grid grid;
+  frep::GridSpec grid;
   for (int a = 0; a < dimension; ++a)
   {
     const bool bounds_set = this->ModelBounds[2 * a] <= this->ModelBounds[2 * a + 1];
-    grid.lo[a] = bounds_set ? this->ModelBounds[2 * a] : description.Ranges[a][0];
-    grid.hi[a] = bounds_set ? this->ModelBounds[2 * a + 1] : description.Ranges[a][1];
-    grid.samples[a] = this->SampleDimensions[a];
+    grid.axes.push_back({ bounds_set ? this->ModelBounds[2 * a] : description.Ranges[a][0],
+      bounds_set ? this->ModelBounds[2 * a + 1] : description.Ranges[a][1],
+      this->SampleDimensions[a] });
   }
 
   frep::mesh::ExtractOptions options;
@@ -142,20 +142,22 @@ int vtkFRepPolygonizer::RequestData(vtkInformation*, vtkInformationVector** inpu
   options.max_samples = this->MaximumNumberOfSamples;
   options.threads = this->NumberOfThreads;
 
-  // A piece is a slab of cells along the last axis.
+  // A piece is a slab of cells along the last axis: the samples from its first cell's to its
+  // last cell's far side (neighbouring pieces share a plane of samples, as VTK extents do).
   const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
   const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
-  if (pieces > 1 && grid.samples[dimension - 1] >= 2)
+  frep::GridAxis& slab = grid.axes.back();
+  if (pieces > 1 && slab.samples >= 2)
   {
-    const std::int64_t cells = grid.samples[dimension - 1] - 1;
+    const std::int64_t cells = slab.samples - 1;
     const std::int64_t begin = cells * piece / pieces;
     const std::int64_t end = cells * (piece + 1) / pieces;
     if (begin == end)
     {
       return 1; // more pieces than cells: this one is empty
     }
-    options.cells_begin[dimension - 1] = begin;
-    options.cells_end[dimension - 1] = end;
+    slab.begin = begin;
+    slab.end = end + 1;
   }
 
   // Progress goes out on this thread only (observers are not thread-safe); abort is an atomic.

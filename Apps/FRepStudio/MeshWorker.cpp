@@ -89,10 +89,9 @@ void MeshWorker::run(std::uint64_t generation, const SectionRequest& request,
       return;
     const auto mesh_start = std::chrono::steady_clock::now();
     const int resolution = request.resolutions[r];
-    frep::mesh::Grid grid;
-    grid.lo = request.lo;
-    grid.hi = request.hi;
-    grid.samples = { resolution, resolution, x_dim >= 3 ? resolution : 2 };
+    const std::array<std::int64_t, 3> samples{ resolution, resolution, resolution };
+    const frep::GridSpec grid = frep::box_grid(
+      std::span<const double>(request.lo.data(), x_dim >= 3 ? 3 : 2), request.hi, samples);
     frep::mesh::ExtractOptions options;
     options.pool = engine_pool_;
     options.progress = [this, generation](double) { return current(generation); };

@@ -225,56 +225,91 @@ void SpreadsheetPanel::rebuild()
     grid_->addWidget(new QLabel(QString("x%1 = %2").arg(column_axis + 4).arg(
                                   value_of(column_axis, c, n)), grid_widget_),
       0, c + 1, Qt::AlignCenter);
-  std::vector<CellRequest> requests;
+  SheetRequest request;
+  request.base = sheet_.base;
+  request.base.raycast = raycast();
+  request.row_coordinate = row_axis;
+  request.column_coordinate = column_axis;
+  for (int step = 0; step < n; ++step)
+  {
+    request.row_values.push_back(value_of(row_axis, step, n));
+    if (column_axis >= 0)
+      request.column_values.push_back(value_of(column_axis, step, n));
+  }
   for (int r = 0; r < n; ++r)
   {
-    grid_->addWidget(new QLabel(QString("x%1 = %2").arg(row_axis + 4).arg(
-                                  value_of(row_axis, r, n)), grid_widget_),
-      r + 1, 0, Qt::AlignRight | Qt::AlignVCenter);
+    grid_->addWidget(
+      new QLabel(QString("x%1 = %2").arg(row_axis + 4).arg(request.row_values[r]), grid_widget_),
+      r + 1,
+      0,
+      Qt::AlignRight | Qt::AlignVCenter);
     for (int c = 0; c < columns; ++c)
     {
-      CellRequest request = sheet_.base;
-      request.raycast = raycast();
       std::map<std::string, double> values;
-      request.fixed_values[row_axis] = value_of(row_axis, r, n);
-      values["x" + std::to_string(row_axis + 4)] = request.fixed_values[row_axis];
+      values["x" + std::to_string(row_axis + 4)] = request.row_values[r];
       if (column_axis >= 0)
-      {
-        request.fixed_values[column_axis] = value_of(column_axis, c, n);
-        values["x" + std::to_string(column_axis + 4)] = request.fixed_values[column_axis];
-      }
+        values["x" + std::to_string(column_axis + 4)] = request.column_values[c];
       auto* button = new QToolButton(grid_widget_);
-      button->setFixedSize(request.pixels + 8, request.pixels + 8);
-      button->setIconSize(QSize(request.pixels, request.pixels));
+      button->setFixedSize(request.base.pixels + 8, request.base.pixels + 8);
+      button->setIconSize(QSize(request.base.pixels, request.base.pixels));
       button->setToolTip(tr("Click: move the sliders here"));
       connect(button, &QToolButton::clicked, this, [this, values] { emit cellActivated(values); });
       grid_->addWidget(button, r + 1, c + 1);
       cells_.push_back(button);
-      requests.push_back(std::move(request));
     }
   }
   cell_columns_ = columns;
   fitCells();
-  status_->setText(tr("Computing %1 cells...").arg(requests.size()));
+  status_->setText(tr("Framing %1 cells...").arg(cells_.size()));
 
-  // One job for the whole grid, cell by cell in reading order; each finished cell is posted to
-  // the UI thread, where it is dropped if a newer grid has replaced this one meanwhile.
-  jobs_.start([this, generation, requests = std::move(requests)] {
-    auto keep_going = [this, generation] { return generation_.load() == generation; };
-    for (std::size_t i = 0; i < requests.size() && keep_going(); ++i)
+  // One job for the whole grid: the sheet's plan and framing (one camera for every cell), then
+  // cell by cell in reading order; each finished cell is posted to the UI thread, where it is
+  // dropped if a newer grid has replaced this one meanwhile.
+  jobs_.start(
+    [this, generation, request = std::move(request)]
     {
-      QImage picture = render_cell(requests[i], engine_pool_, keep_going);
-      QMetaObject::invokeMethod(this, [this, generation, i, picture] {
-        if (generation_.load() != generation || i >= cells_.size())
-          return;
-        cells_[i]->setIcon(QPixmap::fromImage(picture));
-        ++finished_;
-        status_->setText(finished_ == static_cast<int>(cells_.size())
-            ? tr("%1 cells. Click one to move the sliders there.").arg(finished_)
-            : tr("Computing: %1 of %2 cells").arg(finished_).arg(cells_.size()));
-      }, Qt::QueuedConnection);
-    }
-  });
+      auto keep_going = [this, generation] { return generation_.load() == generation; };
+      auto post_error = [this, generation](const std::string& error)
+      {
+        QMetaObject::invokeMethod(
+          this,
+          [this, generation, error]
+          {
+            if (generation_.load() == generation)
+              status_->setText(
+                tr("The spreadsheet cannot be drawn: %1").arg(QString::fromStdString(error)));
+          },
+          Qt::QueuedConnection);
+      };
+      std::string error;
+      const std::unique_ptr<SheetRenderer> renderer =
+        SheetRenderer::prepare(request, engine_pool_, keep_going, &error);
+      if (!renderer)
+      {
+        if (!error.empty())
+          post_error(error);
+        return;
+      }
+      for (std::size_t i = 0; i < renderer->cellCount() && keep_going(); ++i)
+      {
+        QImage picture = renderer->cell(i, keep_going, &error);
+        if (!error.empty())
+          return post_error(error);
+        QMetaObject::invokeMethod(
+          this,
+          [this, generation, i, picture]
+          {
+            if (generation_.load() != generation || i >= cells_.size())
+              return;
+            cells_[i]->setIcon(QPixmap::fromImage(picture));
+            ++finished_;
+            status_->setText(finished_ == static_cast<int>(cells_.size())
+                               ? tr("%1 cells. Click one to move the sliders there.").arg(finished_)
+                               : tr("Computing: %1 of %2 cells").arg(finished_).arg(cells_.size()));
+          },
+          Qt::QueuedConnection);
+      }
+    });
 }
 
 } // namespace frepstudio

@@ -4,14 +4,12 @@
 #include "SectionPicture.h"
 #include "SectionTape.h"
 
-#include "Compiler/attribute_rgb.h"
-#include "Mesh/surface.h"
-#include "Imaging/image.h"
-#include "Render/mesh_renderer.h"
+#include "Eval/thread_pool.h"
+#include "Scene/pictures.h"
+#include "Scene/sample_picture.h"
 
 #include <cmath>
-#include <optional>
-#include <stdexcept>
+#include <exception>
 
 namespace frepstudio
 {
@@ -19,103 +17,152 @@ namespace frepstudio
 namespace
 {
 
-// The 3-D view's default direction (SectionView), closer than where the box's bounding sphere
-// would fit: the box's corners leave the picture, but the shapes (usually well inside the
-// box) are large enough to read in a small cell.
-frep::imaging::Camera cell_camera(const CellRequest& request)
+namespace fm = frep::mapping;
+
+constexpr std::array<double, 3> kCellBackground{ 0.24, 0.26, 0.31 }; // sRGB, the 3-D view's
+constexpr std::array<double, 3> kFaceColour{ 50 / 255.0, 200 / 255.0, 80 / 255.0 }; // hfp's
+
+// The 3-D view's default look (SectionView: y up, the camera towards (1, 0.8, 2.2) of the box's
+// centre) in the mapping's world, whose up is z: x1 -> x, x2 -> z (up), x3 -> -y (a rotation
+// about x, as Examples/homotopic/homotopic.json maps them), and that direction, (1, -2.2, 0.8)
+// in the world, as the mapping's azimuth and elevation (imaging::fit_box's angles).
+constexpr std::array<int, 3> kWorldAxis{ 0, 2, 1 };
+const double kAzimuth = std::atan2(1.0, 2.2) * 180.0 / M_PI;                          // 24.4
+const double kElevation = std::atan2(0.8, std::sqrt(1.0 + 2.2 * 2.2)) * 180.0 / M_PI; // 18.3
+
+fm::Channel world_channel(int coordinate, double lo, double hi)
 {
-  constexpr double kFill = 1.3;
-  const double angle = 30.0;
-  frep::imaging::Camera camera;
-  camera.view_angle_deg = angle;
-  frep::imaging::Vec3 centre{};
-  double radius = 0;
-  for (int i = 0; i < 3; ++i)
-  {
-    centre[i] = (request.lo[i] + request.hi[i]) / 2;
-    radius += std::pow((request.hi[i] - request.lo[i]) / 2, 2);
-  }
-  radius = std::sqrt(radius);
-  const double distance = radius / std::sin(angle / 2 * M_PI / 180) / kFill;
-  const frep::imaging::Vec3 direction{ 1, 0.8, 2.2 };
-  const double length = std::sqrt(1 + 0.64 + 4.84);
-  for (int i = 0; i < 3; ++i)
-    camera.position[i] = centre[i] + direction[i] / length * distance;
-  camera.focal_point = centre;
-  camera.view_up = { 0, 1, 0 };
-  return camera;
+  fm::Channel c;
+  c.type = fm::Channel::Type::World;
+  c.axis = kWorldAxis[static_cast<std::size_t>(coordinate)];
+  c.range = fm::Interval{ lo, hi };
+  if (coordinate == 2)
+    c.target = fm::Interval{ hi, lo }; // x3 grows towards -y: a rotation, not a mirror
+  return c;
 }
 
-constexpr std::array<float, 3> kCellBackground{ 0.24F, 0.26F, 0.31F }; // sRGB
-
-QImage raycast_cell(const CellRequest& request, const std::function<bool()>& keep_going)
+fm::Channel grid_channel(int grid_axis, const std::vector<double>& values)
 {
-  SectionPictureRequest picture;
-  static_cast<SectionSpec&>(picture) = request;
-  picture.camera = cell_camera(request);
-  picture.width = picture.height = request.pixels;
-  picture.background_bottom = picture.background_top = kCellBackground;
-  picture.supersample = 3; // small cells: silhouettes are most of what they show
-  return section_picture(picture, keep_going);
+  fm::Channel c;
+  c.type = fm::Channel::Type::Spreadsheet;
+  c.grid_axis = grid_axis;
+  c.values = values;
+  return c;
+}
+
+fm::Channel fixed_channel(double value)
+{
+  fm::Channel c;
+  c.type = fm::Channel::Type::Fixed;
+  c.value = value;
+  return c;
 }
 
 } // namespace
 
-QImage render_cell(const CellRequest& request, const std::shared_ptr<frep::ThreadPool>& pool,
-  const std::function<bool()>& keep_going)
+fm::Spec sheet_mapping(const SheetRequest& request, bool model_colours)
 {
-  if (!request.model || request.model->x_dim() < 3)
-    return {};
-  if (request.raycast)
-    return raycast_cell(request, keep_going);
-  std::shared_ptr<const frep::Tape> tape;
+  const CellRequest& base = request.base;
+  fm::Spec spec;
+  spec.parameters = base.parameters;
+  for (int i = 0; i < 3; ++i)
+    spec.coordinates.push_back({ "x" + std::to_string(i + 1),
+      { world_channel(
+        i, base.lo[static_cast<std::size_t>(i)], base.hi[static_cast<std::size_t>(i)]) } });
+  for (int k = 0; k < static_cast<int>(base.fixed_values.size()); ++k)
+  {
+    const fm::Channel channel = k == request.row_coordinate ? grid_channel(1, request.row_values)
+                                : k == request.column_coordinate
+                                  ? grid_channel(0, request.column_values)
+                                  : fixed_channel(base.fixed_values[static_cast<std::size_t>(k)]);
+    spec.coordinates.push_back({ "x" + std::to_string(k + 4), { channel } });
+  }
+  spec.world.resolution = base.resolution;
+  spec.spreadsheet.cell_size = base.pixels;
+  spec.render.width = spec.render.height = base.pixels;
+  spec.render.background = kCellBackground;
+  spec.render.colour = kFaceColour;
+  spec.render.azimuth = kAzimuth;
+  spec.render.elevation = kElevation;
+  spec.render.colour_source = model_colours ? fm::RenderSettings::ColourSource::Attributes
+                                            : fm::RenderSettings::ColourSource::Uniform;
+  spec.render.method =
+    base.raycast ? fm::RenderSettings::Method::Raycast : fm::RenderSettings::Method::Mesh;
+  return spec;
+}
+
+std::unique_ptr<SheetRenderer> SheetRenderer::prepare(const SheetRequest& request,
+  const std::shared_ptr<frep::ThreadPool>& pool,
+  const std::function<bool()>& keep_going,
+  std::string* error)
+{
+  const CellRequest& base = request.base;
+  if (!base.model || base.model->x_dim() < 4)
+  {
+    *error = "the spreadsheet needs a model with a coordinate beyond x1..x3";
+    return nullptr;
+  }
+  bool model_colours = false;
   try
   {
-    tape = section_tape(*request.model, request.parameters, request.fixed_values);
+    model_colours = colouring_for(*section_tape(*base.model, base.parameters, base.fixed_values),
+                      base.s_dim) == SectionColouring::Rgb;
   }
-  catch (const std::exception&)
+  catch (const std::exception& e)
   {
-    return {};
+    *error = e.what();
+    return nullptr;
   }
+  std::unique_ptr<SheetRenderer> sheet(new SheetRenderer());
+  sheet->base_ = base;
+  sheet->pool_ = pool;
+  sheet->spec_ = sheet_mapping(request, model_colours);
+  fm::PlanResult planned =
+    fm::make_plan(sheet->spec_, fm::hyperfun_coordinates(base.model->x_dim()));
+  if (!planned.ok())
+  {
+    *error = fm::format_errors(planned.errors);
+    return nullptr;
+  }
+  sheet->plan_ = std::move(planned.plan);
+  if (!keep_going())
+    return nullptr;
+  sheet->framing_ =
+    fm::frame_solids(sheet->spec_.render, *base.model, base.parameters, sheet->plan_, pool.get());
+  sheet->camera_ = fm::plan_camera(sheet->plan_, sheet->spec_.render, 1.0, sheet->framing_);
+  return keep_going() ? std::move(sheet) : nullptr;
+}
 
-  frep::mesh::Grid grid;
-  grid.lo = request.lo;
-  grid.hi = request.hi;
-  grid.samples = { request.resolution, request.resolution, request.resolution };
-  frep::mesh::ExtractOptions options;
-  options.pool = pool;
-  options.progress = [&keep_going](double) { return keep_going(); };
-  const frep::mesh::ExtractResult result = frep::mesh::extract_surface(tape, grid, options);
-  if (!result.ok())
+QImage SheetRenderer::cell(std::size_t i,
+  const std::function<bool()>& keep_going,
+  std::string* error) const
+{
+  if (i >= plan_.cells.size())
     return {};
-
-  const frep::imaging::Camera camera = cell_camera(request);
-  frep::imaging::Image picture(request.pixels, request.pixels,
-    frep::imaging::srgb(kCellBackground[0], kCellBackground[1], kCellBackground[2]));
-  std::vector<float> colours;
-  frep::render::MeshInput mesh;
-  mesh.points = result.surface.points;
-  mesh.triangles = result.surface.cells;
-  mesh.normals = result.surface.normals;
-  if (colouring_for(*tape, request.s_dim) == SectionColouring::Rgb)
+  fm::DrawOptions options;
+  options.pool = pool_;
+  options.cancel = [&keep_going] { return !keep_going(); };
+  // FRepStudio's cells sample `resolution` points on every axis (the mapping's resolution is
+  // along the longest axis only).
+  options.samples = { base_.resolution, base_.resolution, base_.resolution };
+  const fm::SamplePicture p = fm::draw_sample(*base_.model,
+    base_.parameters,
+    plan_,
+    plan_.cells[i],
+    camera_,
+    base_.pixels,
+    base_.pixels,
+    spec_.render,
+    spec_.render.method,
+    options,
+    framing_);
+  if (!p.ok())
   {
-    const frep::mesh::Surface& surface = result.surface;
-    for (const frep::AttributeRgb& c : frep::attribute_colours(surface.attributes,
-           static_cast<std::size_t>(surface.attribute_count),
-           surface.point_count()))
-      for (float component : c)
-        colours.push_back(frep::imaging::srgb_to_linear(component));
-    mesh.colours = colours;
-  }
-  else
-  {
-    mesh.colour = default_face_colour_linear(); // as in the 3-D view
-  }
-  frep::imaging::RenderStyle style;
-  style.threads = 1; // cells are small; the mesher already uses the cores
-  if (!frep::render::render_mesh(picture, camera, mesh, style).ok() || !keep_going())
+    if (!p.cancelled)
+      *error = p.error;
     return {};
-  return to_qimage(picture);
+  }
+  return to_qimage(p.image);
 }
 
 } // namespace frepstudio

@@ -109,13 +109,14 @@ int run_cli_layers(const HfpArguments& a,
   frep::durable::AtomicOutput output(a.cli_name);
   write_cli_header(output.stream());
 
-  frep::mesh::Grid grid;
+  frep::GridSpec grid;
   for (std::size_t k = 0; k < 2; ++k)
   {
-    grid.lo[k] = a.box[k];
-    grid.hi[k] = a.box[k + 3];
-    const double cells = std::ceil((grid.hi[k] - grid.lo[k]) / a.slicing_step[k] - 1e-9);
-    grid.samples[k] = std::max<std::int64_t>(2, static_cast<std::int64_t>(cells) + 1);
+    const double lo = a.box[k];
+    const double hi = a.box[k + 3];
+    const double cells = std::ceil((hi - lo) / a.slicing_step[k] - 1e-9);
+    grid.axes.push_back(
+      { lo, hi, std::max<std::int64_t>(2, static_cast<std::int64_t>(cells) + 1) });
   }
   std::cout << "Z range: [" << zmin << "; " << zmax << "]\n";
 
@@ -149,10 +150,12 @@ int run_cli_layers(const HfpArguments& a,
     const frep::mesh::ExtractResult result = run_extraction(tape, grid, extract, run);
     failed += result.statistics.failed_samples;
     frep::PointEvaluator corner(tape);
-    const double corner_point[2] = { grid.lo[0], grid.lo[1] };
+    const double corner_point[2] = { grid.axes[0].lo, grid.axes[1].lo };
     const bool box_inside = corner.value(corner_point) >= a.iso;
-    const std::vector<ContourLoop> loops = close_contour_loops(
-      result.surface, { grid.lo[0], grid.lo[1] }, { grid.hi[0], grid.hi[1] }, box_inside);
+    const std::vector<ContourLoop> loops = close_contour_loops(result.surface,
+      { grid.axes[0].lo, grid.axes[1].lo },
+      { grid.axes[0].hi, grid.axes[1].hi },
+      box_inside);
     if (!loops.empty())
     {
       write_cli_layer(output.stream(), z, loops);
@@ -293,12 +296,10 @@ int run_hfp(const std::vector<std::string>& args)
     outputs.push_back(std::make_unique<frep::durable::AtomicOutput>(file.path));
   }
 
-  frep::mesh::Grid grid;
+  frep::GridSpec grid;
   for (std::size_t k = 0; k < 3; ++k)
   {
-    grid.lo[k] = a.box[k];
-    grid.hi[k] = a.box[k + 3];
-    grid.samples[k] = a.grid[k] + 1; // hfp's -g counts cells
+    grid.axes.push_back({ a.box[k], a.box[k + 3], a.grid[k] + 1 }); // hfp's -g counts cells
   }
   frep::mesh::ExtractOptions extract;
   extract.iso = a.iso;
@@ -318,8 +319,7 @@ int run_hfp(const std::vector<std::string>& args)
   document.surface = &surface;
   document.name = object.name;
   document.source = a.model;
-  document.box_lo = grid.lo;
-  document.box_hi = grid.hi;
+  document.set_box(grid);
   document.normals = a.normals;
   for (std::size_t k = 0; k < 3; ++k)
   {

@@ -146,11 +146,11 @@ int run_render(const RenderOptions& options)
   frep::raycast::Shape shape;
   shape.tape = model->specialise(axes.specialisation(options.parameters));
   // The solid is cut by this box (its own bounds by default); the camera frames the solid in it.
-  const frep::mesh::Grid grid = make_grid(
+  const frep::GridSpec grid = make_grid(
     box_or_solid_bounds(parse_box(options.box, axes.free), shape.tape, options.quiet), {}, 3);
   for (int k = 0; k < 3; ++k)
   {
-    shape.box[k] = { grid.lo[k], grid.hi[k] };
+    shape.box[k] = { grid.axes[k].lo, grid.axes[k].hi };
   }
   shape.colour = colour;
   const int width = size->width, height = size->height;

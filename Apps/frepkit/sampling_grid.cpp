@@ -51,20 +51,15 @@ std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
   return result;
 }
 
-frep::mesh::Grid make_grid(const std::vector<double>& box,
+frep::GridSpec make_grid(const std::vector<double>& box,
   const std::vector<std::int64_t>& grid,
   int axes)
 {
   static const char* const kMinNames[] = { "xmin", "ymin", "zmin" };
   static const char* const kMaxNames[] = { "xmax", "ymax", "zmax" };
-  frep::mesh::Grid result;
-  for (int k = 0; k < 3; ++k)
-  {
-    result.lo[static_cast<std::size_t>(k)] = -kDefaultBoxHalfSize;
-    result.hi[static_cast<std::size_t>(k)] = kDefaultBoxHalfSize;
-    result.samples[static_cast<std::size_t>(k)] = kDefaultSamples;
-  }
   const std::size_t n = static_cast<std::size_t>(axes);
+  frep::GridSpec result;
+  result.axes.assign(n, { -kDefaultBoxHalfSize, kDefaultBoxHalfSize, kDefaultSamples });
   if (!box.empty())
   {
     if (box.size() != 2 * n)
@@ -94,8 +89,8 @@ frep::mesh::Grid make_grid(const std::vector<double>& box,
         throw UserError(std::string("--box: ") + kMinNames[k] + " = " + format_short(lo) +
                         " is not less than " + kMaxNames[k] + " = " + format_short(hi));
       }
-      result.lo[k] = lo;
-      result.hi[k] = hi;
+      result.axes[k].lo = lo;
+      result.axes[k].hi = hi;
     }
   }
   if (!grid.empty())
@@ -114,32 +109,22 @@ frep::mesh::Grid make_grid(const std::vector<double>& box,
           "--grid " + std::to_string(samples) +
           ": at least 2 samples per axis are needed (the grid counts samples, not cells)");
       }
-      result.samples[k] = samples;
+      result.axes[k].samples = samples;
     }
   }
   return result;
 }
 
-double grid_sample_count(const frep::mesh::Grid& grid, int axes)
-{
-  double count = 1;
-  for (int k = 0; k < axes; ++k)
-  {
-    count *= static_cast<double>(grid.samples[static_cast<std::size_t>(k)]);
-  }
-  return count;
-}
-
-std::string describe_grid(const frep::mesh::Grid& grid, int axes)
+std::string describe_grid(const frep::GridSpec& grid)
 {
   std::string samples;
   std::string box;
-  for (int k = 0; k < axes; ++k)
+  for (const frep::GridAxis& axis : grid.axes)
   {
-    const std::size_t i = static_cast<std::size_t>(k);
-    samples += (k == 0 ? "" : " x ") + std::to_string(grid.samples[i]);
-    box += std::string(k == 0 ? "" : " x ") + "[" + format_short(grid.lo[i]) + ", " +
-           format_short(grid.hi[i]) + "]";
+    const bool first = samples.empty();
+    samples += (first ? "" : " x ") + std::to_string(axis.samples);
+    box += std::string(first ? "" : " x ") + "[" + format_short(axis.lo) + ", " +
+           format_short(axis.hi) + "]";
   }
   return samples + " samples over " + box;
 }

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "Compiler/tape.h"
-#include "Mesh/surface.h"
+#include "Sample/grid.h"
 
 #include <cstdint>
 #include <memory>
@@ -29,14 +29,11 @@ std::vector<double> box_or_solid_bounds(const std::vector<double>& box,
 /// numbers: all minima, then all maxima) and --grid (empty = 128, else one value for every axis or
 /// one per axis). Throws UserError for a wrong count, min >= max, a non-finite bound or fewer than
 /// 2 samples. Too many samples are left to the consumer (the mesher refuses with its message).
-frep::mesh::Grid make_grid(const std::vector<double>& box,
+frep::GridSpec make_grid(const std::vector<double>& box,
   const std::vector<std::int64_t>& grid,
   int axes);
 
-/// Total samples of the first `axes` axes, as a double (no overflow).
-double grid_sample_count(const frep::mesh::Grid& grid, int axes);
-
 /// "128 x 128 x 128 samples over [-10, 10] x [-10, 10] x [-10, 10]"
-std::string describe_grid(const frep::mesh::Grid& grid, int axes);
+std::string describe_grid(const frep::GridSpec& grid);
 
 } // namespace frepkit

@@ -12,24 +12,20 @@ namespace frepkit
 {
 
 SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
-  const frep::mesh::Grid& grid,
-  int axes,
+  const frep::GridSpec& grid,
   bool attributes,
   int threads,
   bool show_progress,
   bool sign_only,
   double iso)
 {
-  frep::GridSpec spec;
   SampledSection section;
-  section.axes = axes;
-  for (int k = 0; k < axes; ++k)
+  section.axes = static_cast<int>(grid.axes.size());
+  for (std::size_t i = 0; i < grid.axes.size(); ++i)
   {
-    const std::size_t i = static_cast<std::size_t>(k);
-    spec.axes.push_back({ grid.lo[i], grid.hi[i], grid.samples[i] });
-    section.samples[i] = grid.samples[i];
-    section.origin[i] = grid.lo[i];
-    section.spacing[i] = frep::grid_step(grid.lo[i], grid.hi[i], grid.samples[i]);
+    section.samples[i] = grid.axes[i].samples;
+    section.origin[i] = grid.axes[i].lo;
+    section.spacing[i] = grid.axes[i].step();
   }
   frep::SampleOptions options;
   options.attribute_count = attributes ? -1 : 0;
@@ -39,7 +35,7 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
   options.sign_only = sign_only; // (with attributes the sampler refuses: check_grid)
   options.iso = iso;
   // Refused before the section's arrays are allocated.
-  if (const std::string problem = frep::check_grid(spec, tape->input_count, options);
+  if (const std::string problem = frep::check_grid(grid, tape->input_count, options);
       !problem.empty())
   {
     char limit[120];
@@ -47,8 +43,8 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
       sizeof limit,
       ". A sampled image or volume may not exceed the limit of %.0f samples; lower --grid",
       kMaxSectionSamples);
-    throw UserError("cannot sample the " + std::string(axes == 3 ? "volume" : "image") + ": " +
-                    problem + limit);
+    throw UserError("cannot sample the " + std::string(section.axes == 3 ? "volume" : "image") +
+                    ": " + problem + limit);
   }
   section.values.resize(section.count());
   const std::size_t s_count = tape->outputs.size() > 0 ? tape->outputs.size() - 1 : 0;
@@ -64,7 +60,9 @@ SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
     bar.update(fraction);
     return !frep::durable::InterruptGuard::interrupted();
   };
-  const frep::SampleResult result = frep::sample_grid(tape, spec, options,
+  const frep::SampleResult result = frep::sample_grid(tape,
+    grid,
+    options,
     [&section](const frep::SampleBlock& b)
     {
       std::copy_n(b.values, b.count, section.values.begin() + b.first);

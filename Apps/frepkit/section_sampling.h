@@ -16,13 +16,12 @@ namespace frepkit
 /// (SampleOptions::max_samples: the engine's limit, lowered to what slice holds in memory).
 constexpr double kMaxSectionSamples = 134217728.0;
 
-/// Samples `tape` (axes inputs) over the first `axes` axes of `grid`. With `sign_only` (no
+/// Samples `tape` (one input per axis of `grid`: 2 or 3) over `grid`. With `sign_only` (no
 /// attributes), only each sample's side of `iso` is exact: a tile the engine proves wholly on one
 /// side holds a bound of F on that side (frep::SampleOptions::sign_only), as a picture needs.
 /// Throws UserError when the grid has too many samples; Ctrl-C cancels (UserError).
 SampledSection sample_section(std::shared_ptr<const frep::Tape> tape,
-  const frep::mesh::Grid& grid,
-  int axes,
+  const frep::GridSpec& grid,
   bool attributes,
   int threads,
   bool show_progress,

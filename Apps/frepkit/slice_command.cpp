@@ -175,7 +175,7 @@ int run_slice(const SliceOptions& options)
   const std::shared_ptr<const frep::Model> model = loaded.model;
   const std::shared_ptr<const frep::Tape> tape =
     model->specialise(axes.specialisation(options.parameters));
-  const frep::mesh::Grid grid =
+  const frep::GridSpec grid =
     make_grid(box_or_solid_bounds(parse_box(options.box, axes.free), tape, options.quiet),
       options.grid,
       axis_count);
@@ -245,7 +245,6 @@ int run_slice(const SliceOptions& options)
     const bool want_attributes = (kind == SliceKind::Image && attributes) || colours;
     SampledSection section = sample_section(tape,
       grid,
-      axis_count,
       want_attributes,
       options.threads,
       !options.quiet,
@@ -292,9 +291,9 @@ int run_slice(const SliceOptions& options)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char time[32];
     std::snprintf(time, sizeof time, "%.3g s", seconds);
-    std::cout << options.output << ": " << summary << ", " << time << " (axes "
-              << axes.free_names() << (fixed.empty() ? "" : "; " + fixed) << "; "
-              << describe_grid(grid, axis_count) << "); failed samples " << failed << '\n';
+    std::cout << options.output << ": " << summary << ", " << time << " (axes " << axes.free_names()
+              << (fixed.empty() ? "" : "; " + fixed) << "; " << describe_grid(grid)
+              << "); failed samples " << failed << '\n';
   }
   return 0;
 }

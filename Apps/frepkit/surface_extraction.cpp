@@ -10,7 +10,7 @@ namespace frepkit
 {
 
 frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
-  const frep::mesh::Grid& grid,
+  const frep::GridSpec& grid,
   frep::mesh::ExtractOptions options,
   const ExtractionRun& run)
 {

@@ -20,7 +20,7 @@ struct ExtractionRun
 
 /// Extracts, or throws UserError (the mesher's error, or "cancelled").
 frep::mesh::ExtractResult run_extraction(std::shared_ptr<const frep::Tape> tape,
-  const frep::mesh::Grid& grid,
+  const frep::GridSpec& grid,
   frep::mesh::ExtractOptions options,
   const ExtractionRun& run);
 

@@ -29,8 +29,7 @@ int write_surface_file(SurfaceJob job)
   document.surface = &surface;
   document.name = job.name;
   document.source = job.source;
-  document.box_lo = job.grid.lo;
-  document.box_hi = job.grid.hi;
+  document.set_box(job.grid);
   document.normals = job.normals;
   if (job.colours)
   {
@@ -48,7 +47,7 @@ int write_surface_file(SurfaceJob job)
   if (surface.cell_count() == 0)
   {
     std::cerr << "frepkit: warning: no surface in the box (F = " << format_short(job.extract.iso)
-              << " is not crossed on the " << describe_grid(job.grid, 3)
+              << " is not crossed on the " << describe_grid(job.grid)
               << "); wrote an empty mesh to " << job.output << '\n';
   }
   if (!job.quiet)
@@ -62,7 +61,7 @@ int write_surface_file(SurfaceJob job)
       surface.cell_count(),
       surface.point_count(),
       seconds);
-    std::cout << job.output << ": " << line << " (" << describe_grid(job.grid, 3)
+    std::cout << job.output << ": " << line << " (" << describe_grid(job.grid)
               << (job.colours ? "; colours from s[1..3]" : "") << ")\n  "
               << describe_statistics(result.statistics) << '\n';
   }

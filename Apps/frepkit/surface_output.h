@@ -15,7 +15,7 @@ namespace frepkit
 struct SurfaceJob
 {
   std::shared_ptr<const frep::Tape> tape; ///< 3 inputs
-  frep::mesh::Grid grid;
+  frep::GridSpec grid;                    ///< 3 axes
   frep::mesh::ExtractOptions extract; ///< normals/attributes are decided here
   MeshFormat format = MeshFormat::Stl;
   bool ascii = false;

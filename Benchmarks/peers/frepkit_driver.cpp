@@ -182,10 +182,9 @@ int mesh(int argc, char** argv)
   const std::int64_t samples = std::stoll(argv[5]);
   const auto start = std::chrono::steady_clock::now();
   const peers::LoadedModel model = peers::load_model(argv[2], argv[3]);
-  frep::mesh::Grid grid;
-  grid.lo = { lo[0], lo[1], lo[2] };
-  grid.hi = { hi[0], hi[1], hi[2] };
-  grid.samples = { samples, samples, samples };
+  const frep::GridSpec grid{
+    { { lo[0], hi[0], samples }, { lo[1], hi[1], samples }, { lo[2], hi[2], samples } }
+  };
   frep::mesh::ExtractOptions options;
   options.threads = argc > 6 ? std::stoi(argv[6]) : 2;
   const frep::mesh::ExtractResult r = frep::mesh::extract_surface(model.tape, grid, options);

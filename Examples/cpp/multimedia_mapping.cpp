@@ -59,13 +59,7 @@ int main(int argc, char** argv)
   spec.spreadsheet.cell_size = 160;
 
   // 2. The plan: every cell's coordinate values and channel values.
-  fm::ModelCoordinates coordinates;
-  for (int i = 0; i < model.x_dim(); ++i)
-  {
-    coordinates.names.push_back("x" + std::to_string(i + 1));
-    coordinates.intervals.push_back({ -10, 10 });
-  }
-  const fm::PlanResult planned = fm::make_plan(spec, coordinates);
+  const fm::PlanResult planned = fm::make_plan(spec, fm::hyperfun_coordinates(model.x_dim()));
   if (!planned.ok())
   {
     std::cerr << fm::format_errors(planned.errors);

@@ -130,8 +130,10 @@ double seconds_since(Clock::time_point start)
 }
 } // namespace
 
-ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid& grid,
-  int dimension, const ExtractOptions& options,
+ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape,
+  const GridSpec& grid,
+  int dimension,
+  const ExtractOptions& options,
   const std::function<std::unique_ptr<BoxWalker>(const GridFrame&)>& make_walker)
 {
   ExtractResult result;
@@ -148,12 +150,7 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid
   // their pieces is cheap.
   const std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
 
-  CellBox range;
-  result.error = cell_range(frame, options, range);
-  if (!result.error.empty())
-  {
-    return result;
-  }
+  const CellBox range = cell_range(grid, dimension);
   const std::vector<CellBox> blocks = blocks_of(range, dimension, block_cells);
   std::vector<std::unique_ptr<BoxWalker>> walkers(static_cast<std::size_t>(pool->size()));
   std::vector<Piece> pieces(blocks.size());

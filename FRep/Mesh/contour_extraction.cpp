@@ -98,7 +98,8 @@ private:
 
 } // namespace
 
-ExtractResult extract_contour(std::shared_ptr<const Tape> tape, const Grid& grid,
+ExtractResult extract_contour(std::shared_ptr<const Tape> tape,
+  const GridSpec& grid,
   const ExtractOptions& options)
 {
   return detail::run_extraction(tape, grid, 2, options,

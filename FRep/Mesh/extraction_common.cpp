@@ -11,27 +11,21 @@
 namespace frep::mesh::detail
 {
 
-namespace
-{
-const char* axis_name(int axis)
-{
-  static const char* names[] = { "x", "y", "z" };
-  return names[axis];
-}
-} // namespace
-
-GridFrame::GridFrame(const Grid& grid, int dim)
+GridFrame::GridFrame(const GridSpec& grid, int dim)
   : dimension(dim)
 {
   for (int a = 0; a < dimension; ++a)
   {
-    lo[a] = grid.lo[a];
-    samples[a] = grid.samples[a];
-    step[a] = grid_step(grid.lo[a], grid.hi[a], grid.samples[a]);
+    const GridAxis& axis = grid.axes[static_cast<std::size_t>(a)];
+    lo[a] = axis.lo;
+    samples[a] = axis.samples;
+    step[a] = axis.step();
   }
 }
 
-std::string validate(const Tape* tape, const Grid& grid, int dimension,
+std::string validate(const Tape* tape,
+  const GridSpec& grid,
+  int dimension,
   const ExtractOptions& options)
 {
   std::ostringstream message;
@@ -47,25 +41,26 @@ std::string validate(const Tape* tape, const Grid& grid, int dimension,
             << " (fix the others to values: a slice)";
     return message.str();
   }
+  if (grid.axes.size() != static_cast<std::size_t>(dimension))
+  {
+    message << "the grid has " << grid.axes.size() << " axes; "
+            << (dimension == 3 ? "a surface needs 3" : "a contour needs 2");
+    return message.str();
+  }
+  if (std::string axes = check_grid_axes(grid, 2); !axes.empty())
+  {
+    return axes;
+  }
+  std::array<std::int64_t, 3> samples{};
   for (int a = 0; a < dimension; ++a)
   {
-    if (!std::isfinite(grid.lo[a]) || !std::isfinite(grid.hi[a]) || !(grid.lo[a] < grid.hi[a]))
-    {
-      message << "box: the minimum must be less than the maximum on every axis (" << axis_name(a)
-              << ": " << grid.lo[a] << " .. " << grid.hi[a] << ")";
-      return message.str();
-    }
-    if (grid.samples[a] < 2)
-    {
-      message << "grid: at least 2 samples per axis are needed (" << axis_name(a) << ": "
-              << grid.samples[a] << ")";
-      return message.str();
-    }
+    samples[static_cast<std::size_t>(a)] = grid.axes[static_cast<std::size_t>(a)].samples;
   }
   if (std::string size = check_grid_size(
-        std::span<const std::int64_t>(grid.samples.data(), static_cast<std::size_t>(dimension)),
-        options.max_samples, "ExtractOptions::max_samples");
-    !size.empty())
+        std::span<const std::int64_t>(samples.data(), static_cast<std::size_t>(dimension)),
+        options.max_samples,
+        "ExtractOptions::max_samples");
+      !size.empty())
   {
     return size;
   }
@@ -222,22 +217,16 @@ std::string merge_pieces(std::vector<Piece>& pieces, const GridFrame& frame,
   return {};
 }
 
-std::string cell_range(const GridFrame& frame, const ExtractOptions& options, CellBox& range)
+CellBox cell_range(const GridSpec& grid, int dimension)
 {
-  for (int a = 0; a < frame.dimension; ++a)
+  CellBox range;
+  for (int a = 0; a < dimension; ++a)
   {
-    const std::int64_t cells = frame.cells(a);
-    range.c0[a] = options.cells_begin[a];
-    range.c1[a] = options.cells_end[a] == 0 ? cells : options.cells_end[a];
-    if (range.c0[a] < 0 || range.c1[a] > cells || range.c0[a] >= range.c1[a])
-    {
-      std::ostringstream message;
-      message << "cell range " << range.c0[a] << " .. " << range.c1[a] << " on axis "
-              << axis_name(a) << " is not inside the grid's 0 .. " << cells << " cells";
-      return message.str();
-    }
+    const GridAxis& axis = grid.axes[static_cast<std::size_t>(a)];
+    range.c0[a] = axis.begin;
+    range.c1[a] = axis.part_end() - 1;
   }
-  return {};
+  return range;
 }
 
 std::vector<CellBox> blocks_of(const CellBox& range, int dimension, std::int64_t block_cells)

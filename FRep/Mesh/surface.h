@@ -30,17 +30,6 @@ class ThreadPool;
 namespace mesh
 {
 
-/// A regular grid of samples over a box: samples[k] >= 2 points on axis k, the first at lo[k]
-/// and the last at hi[k] (lo < hi). Sample i of axis k is at frep::grid_coordinate(lo, hi, i,
-/// samples) = lo + i * ((hi - lo) / (samples - 1)), as in the sampler (Sample/grid.h).
-/// For a 2-D contour only the first two axes are used.
-struct Grid
-{
-  std::array<double, 3> lo{ -10.0, -10.0, -10.0 };
-  std::array<double, 3> hi{ 10.0, 10.0, 10.0 };
-  std::array<std::int64_t, 3> samples{ 64, 64, 64 };
-};
-
 struct ExtractOptions : RunControl
 {
   double iso = 0.0; ///< the surface is F = iso; F >= iso is inside
@@ -64,11 +53,6 @@ struct ExtractOptions : RunControl
   /// Refuse grids with more samples than this (the time would be unbounded) with an error;
   /// the engine's one grid limit by default (4096^3, Sample/grid.h).
   double max_samples = max_grid_samples;
-  /// Only the cells [cells_begin, cells_end) per axis (a piece of a distributed run; the pieces
-  /// of a partition together give the whole mesh, their shared points duplicated). The caps
-  /// stay on the whole grid's box. cells_end 0 on an axis = up to the last cell.
-  std::array<std::int64_t, 3> cells_begin{ 0, 0, 0 };
-  std::array<std::int64_t, 3> cells_end{ 0, 0, 0 };
   // RunControl: threads or pool; progress is called now and then with the fraction done in
   // [0, 1] from any worker thread, never concurrently (false cancels); cancel is polled before
   // every block of cells.
@@ -111,14 +95,20 @@ struct ExtractResult
   bool ok() const { return error.empty() && !cancelled; }
 };
 
-/// The surface F = iso of a tape with 3 inputs (x, y, z in that order) over the grid.
+/// The surface F = iso of a tape with 3 inputs (x, y, z in that order) over a grid of 3 axes
+/// (Sample/grid.h), each with at least 2 samples and lo < hi. The cells between each axis's
+/// part of the samples, [begin, end - 1), are meshed: a piece of a distributed run (the pieces
+/// of a partition, sharing their boundary samples as VTK extents do, together give the whole
+/// mesh, their shared points duplicated); the caps stay on the whole grid's box.
 /// Run-time errors (NaN values) count as outside. Never throws for bad input: see `error`.
-ExtractResult extract_surface(std::shared_ptr<const Tape> tape, const Grid& grid,
+ExtractResult extract_surface(std::shared_ptr<const Tape> tape,
+  const GridSpec& grid,
   const ExtractOptions& options = {});
 
-/// The contour F = iso of a tape with 2 inputs over the grid's first two axes: line segments,
-/// each oriented with the inside (F >= iso) on its left.
-ExtractResult extract_contour(std::shared_ptr<const Tape> tape, const Grid& grid,
+/// The contour F = iso of a tape with 2 inputs over a grid of 2 axes (as extract_surface):
+/// line segments, each oriented with the inside (F >= iso) on its left.
+ExtractResult extract_contour(std::shared_ptr<const Tape> tape,
+  const GridSpec& grid,
   const ExtractOptions& options = {});
 
 } // namespace mesh

@@ -272,7 +272,8 @@ private:
 
 } // namespace
 
-ExtractResult extract_surface(std::shared_ptr<const Tape> tape, const Grid& grid,
+ExtractResult extract_surface(std::shared_ptr<const Tape> tape,
+  const GridSpec& grid,
   const ExtractOptions& options)
 {
   return detail::run_extraction(tape, grid, 3, options,

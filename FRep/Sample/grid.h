@@ -1,4 +1,5 @@
-// The positions of a regular grid's samples and the one limit on a grid's size, shared by every
+// The engine's one grid description (GridSpec: n axes, each with its samples and the part of
+// them wanted), the positions of its samples and the one limit on a grid's size, shared by every
 // engine part that walks a grid (Sample/grid_sampler.h, Mesh/surface.h) and by their callers.
 //
 // SAMPLE POSITIONS: n samples over [lo, hi] are
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace frep
 {
@@ -53,6 +55,44 @@ inline double grid_coordinate(double lo, double hi, std::int64_t i, std::int64_t
 {
   return grid_coordinate(lo, grid_step(lo, hi, n), i);
 }
+
+/// One axis of a grid: `samples` points from lo to hi, and the part of them wanted.
+struct GridAxis
+{
+  double lo = -10.0;
+  double hi = 10.0;
+  std::int64_t samples = 64; ///< >= 1; with more than one, lo < hi. One sample lies at lo.
+  /// The part wanted: indices [begin, end) of this axis (end 0 = up to the last sample).
+  /// Positions are those of the whole axis: a part has exactly the values of the whole. A
+  /// mesher meshes the cells between the part's samples, [begin, end - 1), so the parts of a
+  /// partition share their boundary samples, as VTK's extents do.
+  std::int64_t begin = 0;
+  std::int64_t end = 0;
+
+  std::int64_t part_end() const { return end == 0 ? samples : end; }
+  double step() const { return grid_step(lo, hi, samples); }
+  /// Sample `i` of the whole axis: grid_coordinate(lo, step(), i).
+  double coordinate(std::int64_t i) const { return grid_coordinate(lo, step(), i); }
+};
+
+/// A regular grid: axis k drives tape input k. Samples are numbered with axis 0 fastest, then
+/// axis 1, ... (the order of a VTK image). The sampler takes any number of axes, the mesher 3
+/// (a surface) or 2 (a contour).
+struct GridSpec
+{
+  std::vector<GridAxis> axes;
+};
+
+/// The whole grid of samples[k] points from lo[k] to hi[k] on each axis (lo.size() axes; hi and
+/// samples as many, the missing ones taken as GridAxis's defaults).
+GridSpec box_grid(std::span<const double> lo,
+  std::span<const double> hi,
+  std::span<const std::int64_t> samples);
+
+/// Empty when every axis of `grid` places at least `min_samples` samples (finite bounds, lo < hi
+/// when it has more than one) and its part is a range of at least `min_samples` of them; else
+/// the first problem, as "grid: axis 2: ...". Does not check the number of axes or the size.
+std::string check_grid_axes(const GridSpec& grid, std::int64_t min_samples);
 
 /// Empty when a grid of samples[0] x samples[1] x ... samples (each >= 1) is within `limit`
 /// (at most 1e18, so that indices and the mesher's edge keys fit in 64 bits); else

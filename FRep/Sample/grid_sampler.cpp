@@ -28,11 +28,6 @@ constexpr std::size_t gradient_chunk = 1024;
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-std::int64_t part_end(const GridAxis& axis)
-{
-  return axis.end == 0 ? axis.samples : axis.end;
-}
-
 // The sample counter of the part: the index on every axis of the next sample (axis 0 fastest)
 // and the position of axes 1.. (constant along a row of axis 0).
 class PartCursor
@@ -60,7 +55,7 @@ public:
     while (p < count)
     {
       // The rest of the current row of axis 0, or of the block.
-      const std::int64_t row_end = part_end(axes_[0]);
+      const std::int64_t row_end = axes_[0].part_end();
       const std::size_t run =
         std::min(count - p, static_cast<std::size_t>(row_end - index_[0]));
       runs.push_back({ p, run, index_[0] });
@@ -76,7 +71,7 @@ public:
       p += run;
       index_[0] += static_cast<std::int64_t>(run);
       // Carry into the higher axes at the end of a row.
-      for (std::size_t k = 0; k + 1 < dimension && index_[k] == part_end(axes_[k]); ++k)
+      for (std::size_t k = 0; k + 1 < dimension && index_[k] == axes_[k].part_end(); ++k)
       {
         index_[k] = axes_[k].begin;
         position_[k] = grid_coordinate(axes_[k].lo, step_[k], index_[k]);
@@ -261,7 +256,7 @@ std::size_t grid_part_size(const GridSpec& grid)
   std::size_t total = 1;
   for (const GridAxis& axis : grid.axes)
   {
-    const std::int64_t n = part_end(axis) - axis.begin;
+    const std::int64_t n = axis.part_end() - axis.begin;
     total *= n > 0 ? static_cast<std::size_t>(n) : 0;
   }
   return total;
@@ -277,32 +272,13 @@ std::string check_grid(const GridSpec& grid, std::uint32_t inputs, const SampleO
             << " (one axis per free coordinate, at least one)";
     return message.str();
   }
-  std::vector<std::int64_t> samples;
-  for (std::size_t a = 0; a < grid.axes.size(); ++a)
+  if (std::string axes = check_grid_axes(grid, 1); !axes.empty())
   {
-    const GridAxis& axis = grid.axes[a];
-    if (axis.samples < 1)
-    {
-      message << "grid: axis " << a << " has " << axis.samples
-              << " samples; every axis needs at least 1";
-      return message.str();
-    }
-    const double step = grid_step(axis.lo, axis.hi, axis.samples);
-    if (!std::isfinite(axis.lo) || !std::isfinite(axis.hi) || !std::isfinite(step) ||
-      !(step > 0.0))
-    {
-      message << "grid: axis " << a << ": cannot place " << axis.samples << " samples in ["
-              << axis.lo << ", " << axis.hi << "] (" << (axis.samples > 1 ? "the minimum must be "
-              "less than the maximum, both finite" : "not finite") << ")";
-      return message.str();
-    }
-    const std::int64_t end = part_end(axis);
-    if (axis.begin < 0 || axis.begin >= end || end > axis.samples)
-    {
-      message << "grid: axis " << a << ": the part [" << axis.begin << ", " << end
-              << ") is not a non-empty range of the samples [0, " << axis.samples << ")";
-      return message.str();
-    }
+    return axes;
+  }
+  std::vector<std::int64_t> samples;
+  for (const GridAxis& axis : grid.axes)
+  {
     samples.push_back(axis.samples);
   }
   if (std::string size = check_grid_size(samples, options.max_samples,

@@ -33,25 +33,6 @@ namespace frep
 
 class ThreadPool;
 
-/// One axis of a grid: `samples` points from lo to hi (grid.h), and the part of them sampled.
-struct GridAxis
-{
-  double lo = -10.0;
-  double hi = 10.0;
-  std::int64_t samples = 64; ///< >= 1; with more than one, lo < hi. One sample lies at lo.
-  /// The part sampled: indices [begin, end) of this axis (end 0 = up to the last sample).
-  /// Positions are those of the whole axis: a part has exactly the values of the whole.
-  std::int64_t begin = 0;
-  std::int64_t end = 0;
-};
-
-/// A regular grid: axis k drives tape input k (axes.size() == the tape's input count, >= 1).
-/// Samples are numbered with axis 0 fastest, then axis 1, ... (the order of a VTK image).
-struct GridSpec
-{
-  std::vector<GridAxis> axes;
-};
-
 /// What happens to a sample whose evaluation raised a run-time error or gave NaN (see
 /// Documentation/compatibility.md, "Run-time errors: the policy").
 enum class FailurePolicy

@@ -112,6 +112,17 @@ bool world_is_affine(const Plan& plan, std::string* why)
   return true;
 }
 
+ModelCoordinates hyperfun_coordinates(int dimension)
+{
+  ModelCoordinates coordinates;
+  for (int i = 0; i < dimension; ++i)
+  {
+    coordinates.names.push_back("x" + std::to_string(i + 1));
+    coordinates.intervals.push_back({ -10.0, 10.0 }); // hfp's default box
+  }
+  return coordinates;
+}
+
 PlanResult make_plan(const Spec& spec, const ModelCoordinates& model)
 {
   return planning::Planner(spec, model).run();

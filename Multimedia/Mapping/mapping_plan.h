@@ -140,4 +140,8 @@ std::array<Interval, 3> curvilinear_box(WorldSystem system, const std::array<Int
 /// All problems are reported, not only the first.
 PlanResult make_plan(const Spec& spec, const ModelCoordinates& model);
 
+/// The coordinates of a HyperFun model with `dimension` coordinates: "x1".."xn", each over hfp's
+/// default box -10..10 (what a channel without a range of its own maps).
+ModelCoordinates hyperfun_coordinates(int dimension);
+
 } // namespace frep::mapping

@@ -18,11 +18,7 @@ void Job::throw_if_stopped() const
 bool plan_job(Job& job, std::vector<std::string>& diagnostics)
 {
   const Model& model = job.model();
-  for (int i = 0; i < model.x_dim(); ++i)
-  {
-    job.coordinates.names.push_back("x" + std::to_string(i + 1));
-    job.coordinates.intervals.push_back({ -10.0, 10.0 }); // hfp's default box
-  }
+  job.coordinates = hyperfun_coordinates(model.x_dim());
   PlanResult planned = make_plan(job.spec(), job.coordinates);
   if (!planned.ok())
   {

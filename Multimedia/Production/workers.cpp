@@ -90,26 +90,6 @@ Workers::Workers(const Job& job, const Products& products, int workers)
                  (products.movie ? plan.frames.size() / 4.0 : 0) + 1.0;
 }
 
-Section Workers::section(const Sample& sample, int worker)
-{
-  SectionOptions so;
-  so.pool = pools_[static_cast<std::size_t>(worker)];
-  so.cancel = [this] { return job_.stopped(); };
-  Section section = make_section(job_.model(), job_.inputs.parameters, job_.plan, sample, so);
-  if (section.cancelled)
-  {
-    throw Stopped();
-  }
-  job_.throw_if_stopped();
-  if (!section.error.empty())
-  {
-    throw ProductionError(sample.label + ": " + section.error);
-  }
-  failed_samples_ += section.statistics.failed_samples;
-  triangles_ += section.surface.cell_count();
-  return section;
-}
-
 Workers::Picture Workers::picture(RenderSettings::Method method,
   const Sample& sample,
   const imaging::Camera& camera,
@@ -119,44 +99,39 @@ Workers::Picture Workers::picture(RenderSettings::Method method,
   int threads,
   const raycast::Floor* floor)
 {
-  Picture p;
-  const auto t0 = Clock::now();
-  if (method == RenderSettings::Method::Raycast)
+  DrawOptions options;
+  if (threads == 1)
   {
-    RaycastOptions ro;
-    ro.threads = threads;
-    ro.cancel = [this] { return job_.stopped(); };
-    ro.floor = floor;
-    // On the floor scene's board the solid stands on its lowest point.
-    const Sample placed = floor ? stand_on_floor(job_.model(),
-                                    job_.inputs.parameters,
-                                    job_.plan,
-                                    sample,
-                                    *floor,
-                                    threads)
-                                : sample;
-    RaycastPicture r = raycast_sample(
-      job_.model(), job_.inputs.parameters, job_.plan, placed, camera, width, height, ro);
-    job_.throw_if_stopped();
-    if (!r.ok())
-    {
-      throw ProductionError(sample.label + ": " + r.error);
-    }
-    p.image = std::move(r.image);
-    p.render_seconds = seconds_since(t0);
-    return p;
+    options.pool = pools_[static_cast<std::size_t>(worker)];
   }
-  Section s = section(sample, worker);
-  if (floor)
+  else
   {
-    stand_on_floor(s, *floor); // the mesh's lowest vertex on the board
+    options.threads = threads;
   }
-  const auto t1 = Clock::now();
-  p.image = render_sample(
-    job_.plan, s, sample, camera, width, height, job_.spec().render, threads, floor, job_.framing);
-  p.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
-  p.render_seconds = seconds_since(t1);
-  p.triangles = s.surface.cell_count();
+  options.cancel = [this] { return job_.stopped(); };
+  options.floor = floor;
+  Picture p = draw_sample(job_.model(),
+    job_.inputs.parameters,
+    job_.plan,
+    sample,
+    camera,
+    width,
+    height,
+    job_.spec().render,
+    method,
+    options,
+    job_.framing);
+  if (p.cancelled)
+  {
+    throw Stopped();
+  }
+  job_.throw_if_stopped();
+  if (!p.error.empty())
+  {
+    throw ProductionError(sample.label + ": " + p.error);
+  }
+  failed_samples_ += p.failed_samples;
+  triangles_ += p.triangles;
   return p;
 }
 

@@ -334,12 +334,12 @@ Section make_section(const Model& model,
     return section;
   }
 
-  mesh::Grid grid;
-  for (int k = 0; k < 3; ++k)
+  GridSpec grid;
+  for (int k = 0; k < axes; ++k)
   {
-    grid.lo[k] = plan.model_box[k].lo;
-    grid.hi[k] = plan.model_box[k].hi;
-    grid.samples[k] = options.samples[k] > 0 ? options.samples[k] : plan.samples[k];
+    grid.axes.push_back({ plan.model_box[k].lo,
+      plan.model_box[k].hi,
+      options.samples[k] > 0 ? options.samples[k] : plan.samples[k] });
   }
   mesh::ExtractOptions extract;
   static_cast<RunControl&>(extract) = options; // threads, pool, progress, cancel

@@ -357,12 +357,14 @@ TEST(SectionAxes, FixAndFree)
 
 TEST(SamplingGrid, BoxAndGridRules)
 {
-  frep::mesh::Grid g = make_grid({}, {}, 3);
-  EXPECT_EQ(g.samples[2], kDefaultSamples);
-  EXPECT_EQ(g.lo[0], -10.0);
+  frep::GridSpec g = make_grid({}, {}, 3);
+  ASSERT_EQ(g.axes.size(), 3u);
+  EXPECT_EQ(g.axes[2].samples, kDefaultSamples);
+  EXPECT_EQ(g.axes[0].lo, -10.0);
   g = make_grid({ 0, 1, 2, 3, 4, 5 }, { 10, 20, 30 }, 3);
-  EXPECT_EQ(g.hi[2], 5.0);
-  EXPECT_EQ(g.samples[1], 20);
+  EXPECT_EQ(g.axes[2].hi, 5.0);
+  EXPECT_EQ(g.axes[1].samples, 20);
+  EXPECT_EQ(describe_grid(g), "10 x 20 x 30 samples over [0, 3] x [1, 4] x [2, 5]");
   EXPECT_THROW(make_grid({ 0, 1, 2 }, {}, 3), UserError);
   EXPECT_THROW(make_grid({ 0, 0, 0, 1, 0, 1 }, {}, 3), UserError);
   EXPECT_THROW(make_grid({}, { 1 }, 3), UserError);

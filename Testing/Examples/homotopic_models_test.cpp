@@ -61,10 +61,9 @@ std::shared_ptr<const frep::Model> load(const std::string& file, const std::stri
 
 frep::mesh::Surface extract(std::shared_ptr<const frep::Tape> tape, int samples = kGrid)
 {
-  frep::mesh::Grid grid;
-  grid.lo = { -kBox, -kBox, -kBox };
-  grid.hi = { kBox, kBox, kBox };
-  grid.samples = { samples, samples, samples };
+  const frep::GridSpec grid{
+    { { -kBox, kBox, samples }, { -kBox, kBox, samples }, { -kBox, kBox, samples } }
+  };
   frep::mesh::ExtractOptions options;
   options.normals = false;
   options.attributes = false;

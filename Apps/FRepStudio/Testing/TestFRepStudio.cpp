@@ -7,16 +7,20 @@
 #include "CoordinateRanges.h"
 #include "ErrorListWidget.h"
 #include "ImageComparison.h"
+#include "Mapping/mapping_json.h"
 #include "MappingEditor.h"
 #include "ModelAnalysis.h"
 #include "PathPanel.h"
-#include "Mapping/mapping_json.h"
 #include "ScreenshotCapture.h"
 #include "SectionView.h"
 #include "SpreadsheetPanel.h"
+#include "SpreadsheetRenderer.h"
 #include "StudioMainWindow.h"
 
+#include "Compiler/load_model.h"
+#include "Eval/thread_pool.h"
 #include "Language/parser.h"
+#include "Mapping/mapping_plan.h"
 #include "Mesh/solid_bounds.h"
 #include "Mesh/surface.h"
 
@@ -111,12 +115,10 @@ std::size_t engineTriangles(const StudioMainWindow& window,
   const auto model = frep::Model::compile(parsed.program, index).model;
   frep::Specialisation specialisation;
   specialisation.fixed = std::move(fixed);
-  frep::mesh::Grid grid;
-  grid.samples = { n, n, n };
+  frep::GridSpec grid;
   for (int i = 0; i < 3; ++i)
   {
-    grid.lo[i] = shown->ranges.range(i)[0];
-    grid.hi[i] = shown->ranges.range(i)[1];
+    grid.axes.push_back({ shown->ranges.range(i)[0], shown->ranges.range(i)[1], n });
   }
   return frep::mesh::extract_surface(model->specialise(specialisation), grid)
     .surface.cell_count();
@@ -220,6 +222,7 @@ private slots:
   void attributesColourTheSection();
   void spreadsheetCellMovesSliders();
   void spreadsheetRaycastCells();
+  void spreadsheetIsTheMappingsSheet();
   void highQualityViewRayCasts();
   void mappingEditorRoundTrip();
   void pathScrubAndPlay();
@@ -701,6 +704,75 @@ void TestFRepStudio::spreadsheetRaycastCells()
     qPrintable(QString("covered: meshed %1, ray-cast %2").arg(meshed_cover).arg(cast_cover)));
   for (const auto& [row, column] : { std::pair{ 0, 0 }, { 0, 4 }, { 4, 0 }, { 4, 4 } })
     QVERIFY(coveredFraction(sheet->cell(row, column)->icon().pixmap(120).toImage()) > 0.03);
+}
+
+// The panel's sheet is a multimedia mapping drawn by Scene (frepkit map's code): its plan has
+// the panel's cells in reading order with the panel's values, x2 up as in the 3-D view, one
+// camera for every cell; a model without a 4th coordinate is refused with a message.
+void TestFRepStudio::spreadsheetIsTheMappingsSheet()
+{
+  const auto compile = [](const std::string& text)
+  { return frep::load_model(frep::ModelSource::from_text(text)).model; };
+  SheetRequest request;
+  request.base.model =
+    compile("m(x[5], a[1]) { m = 1 + x[4] - x[5] / 2 - x[1]^2 - x[2]^2 / 4 - x[3]^2; }");
+  QVERIFY(request.base.model);
+  request.base.fixed_values = { 0.3, 0.6 };
+  request.base.lo = { -3, -3, -3 };
+  request.base.hi = { 3, 3, 3 };
+  request.base.pixels = 48;
+  request.base.resolution = 24;
+  request.row_coordinate = 1;    // x5
+  request.column_coordinate = 0; // x4
+  request.row_values = { 0, 0.5, 1 };
+  request.column_values = { 0, 1 };
+  const frep::mapping::PlanResult planned =
+    frep::mapping::make_plan(sheet_mapping(request, false), frep::mapping::hyperfun_coordinates(5));
+  QVERIFY2(planned.ok(), frep::mapping::format_errors(planned.errors).c_str());
+  const frep::mapping::Plan& plan = planned.plan;
+  QCOMPARE(plan.cells.size(), std::size_t(6));
+  for (std::size_t i = 0; i < plan.cells.size(); ++i)
+  {
+    QCOMPARE(plan.cells[i].values[3], request.column_values[i % 2]);
+    QCOMPARE(plan.cells[i].values[4], request.row_values[i / 2]);
+  }
+  // World x, y, z are driven by x1, x3, x2: x2 is up, as in the section view.
+  QCOMPARE(plan.world_coordinates, (std::array<int, 3>{ 0, 2, 1 }));
+
+  std::string error;
+  const auto keep_going = [] { return true; };
+  const std::unique_ptr<SheetRenderer> sheet =
+    SheetRenderer::prepare(request, std::make_shared<frep::ThreadPool>(2), keep_going, &error);
+  QVERIFY2(sheet, error.c_str());
+  QCOMPARE(sheet->cellCount(), std::size_t(6));
+  // The ball stands taller than it is wide (x2 has a quarter of the weight): up in the picture.
+  const QImage cell = sheet->cell(5, keep_going, &error);
+  QVERIFY2(!cell.isNull(), error.c_str());
+  QCOMPARE(cell.size(), QSize(48, 48));
+  const auto [height, width] = coveredExtent(cell);
+  QVERIFY2(height > width * 1.3,
+    qPrintable(
+      QString("the ball spans %1 of the cell's height, %2 of its width").arg(height).arg(width)));
+  QVERIFY(sheet
+            ->cell(
+              0, [] { return false; }, &error)
+            .isNull()); // cancelled: nothing
+  QVERIFY(error.empty());
+
+  // One coordinate beyond x1..x3: a column of rows. None: refused.
+  request.base.model = compile("m(x[4], a[1]) { m = 1 + x[4] - x[1]^2 - x[2]^2 - x[3]^2; }");
+  request.base.fixed_values = { 0.5 };
+  request.row_coordinate = 0;
+  request.column_coordinate = -1;
+  request.column_values.clear();
+  const std::unique_ptr<SheetRenderer> rows =
+    SheetRenderer::prepare(request, nullptr, keep_going, &error);
+  QVERIFY2(rows, error.c_str());
+  QCOMPARE(rows->cellCount(), std::size_t(3));
+  request.base.model = compile("m(x[3], a[1]) { m = 1 - x[1]^2 - x[2]^2 - x[3]^2; }");
+  request.base.fixed_values.clear();
+  QVERIFY(!SheetRenderer::prepare(request, nullptr, keep_going, &error));
+  QVERIFY(error.find("beyond x1..x3") != std::string::npos);
 }
 
 void TestFRepStudio::highQualityViewRayCasts()

@@ -64,11 +64,11 @@ int main(int argc, char* argv[])
       const auto t1 = Clock::now();
       frep::mesh::ExtractOptions options;
       options.pool = pool;
-      frep::mesh::Grid grid;
-      grid.samples = { 32, 32, 32 };
+      frep::GridSpec grid{ { { -10, 10, 32 }, { -10, 10, 32 }, { -10, 10, 32 } } };
       frep::mesh::extract_surface(tape, grid, options);
       const auto t2 = Clock::now();
-      grid.samples = { 128, 128, 128 };
+      for (frep::GridAxis& axis : grid.axes)
+        axis.samples = 128;
       frep::mesh::extract_surface(tape, grid, options);
       const auto t3 = Clock::now();
       auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };

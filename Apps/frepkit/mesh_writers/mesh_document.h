@@ -28,6 +28,16 @@ struct MeshDocument
   Rgb face_colour{ 50.0f / 255.0f, 200.0f / 255.0f, 80.0f / 255.0f };
   bool normals = true; ///< write the per-point normals when the surface has them
 
+  /// The box of the grid's first three axes (fewer: the rest stay -10..10).
+  void set_box(const frep::GridSpec& grid)
+  {
+    for (std::size_t k = 0; k < 3 && k < grid.axes.size(); ++k)
+    {
+      box_lo[k] = grid.axes[k].lo;
+      box_hi[k] = grid.axes[k].hi;
+    }
+  }
+
   bool has_normals() const { return normals && !surface->normals.empty(); }
   bool has_colours() const { return !colours.empty(); }
 };

@@ -38,7 +38,7 @@ struct GridFrame
   std::array<double, 3> step{};
   std::array<std::int64_t, 3> samples{ 1, 1, 1 };
 
-  GridFrame(const Grid& grid, int dimension);
+  GridFrame(const GridSpec& grid, int dimension);
   double coord(int axis, std::int64_t i) const { return grid_coordinate(lo[axis], step[axis], i); }
   std::int64_t cells(int axis) const { return samples[axis] - 1; }
   std::int64_t vertex(std::int64_t i, std::int64_t j, std::int64_t k) const
@@ -54,7 +54,9 @@ struct GridFrame
 };
 
 /// Empty when the request can be run; else the message for ExtractResult::error.
-std::string validate(const Tape* tape, const Grid& grid, int dimension,
+std::string validate(const Tape* tape,
+  const GridSpec& grid,
+  int dimension,
   const ExtractOptions& options);
 
 /// Cell range [c0, c1) per axis.
@@ -128,8 +130,8 @@ bool for_each_block(ThreadPool& pool, const std::vector<CellBox>& blocks, const 
   const std::function<void(std::size_t index, const CellBox& block, int slot)>& body,
   std::size_t& block_count);
 
-/// The cells to polygonise: the options' range clipped to the grid (empty: an error message).
-std::string cell_range(const GridFrame& frame, const ExtractOptions& options, CellBox& range);
+/// The cells to polygonise: those between each axis's part of the samples (validated).
+CellBox cell_range(const GridSpec& grid, int dimension);
 
 /// Blocks of at most block_cells cells per axis covering `range`, starting at its corner.
 std::vector<CellBox> blocks_of(const CellBox& range, int dimension, std::int64_t block_cells);
@@ -197,8 +199,10 @@ private:
 
 /// The whole extraction for walkers made by make_walker: validation, blocks in parallel with
 /// progress and cancellation, statistics, merge, per-point finishing.
-ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape, const Grid& grid,
-  int dimension, const ExtractOptions& options,
+ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape,
+  const GridSpec& grid,
+  int dimension,
+  const ExtractOptions& options,
   const std::function<std::unique_ptr<BoxWalker>(const GridFrame&)>& make_walker);
 
 } // namespace frep::mesh::detail

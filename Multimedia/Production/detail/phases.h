@@ -19,6 +19,7 @@
 #include "Scene/floor_scene.h"
 #include "Scene/framing.h"
 #include "Scene/pictures.h"
+#include "Scene/sample_picture.h"
 #include "Scene/section_mesh.h"
 #include "Scene/section_raycast.h"
 
@@ -149,17 +150,11 @@ public:
   int count() const { return static_cast<int>(kits_.size()); }
   PictureKit* kit(int worker) { return kits_[static_cast<std::size_t>(worker)].get(); }
 
-  /// The sample's picture by `method`: its section meshed on `worker`'s pool and rasterised, or
-  /// drawn by rays on `threads` threads (with `floor`, if given: the floor scene's board, on
-  /// which the section is stood by its lowest point, stand_on_floor). Throws Stopped or
-  /// ProductionError.
-  struct Picture
-  {
-    imaging::Image image;
-    double mesh_seconds = 0.0;   ///< meshing (0 when ray-cast)
-    double render_seconds = 0.0; ///< rasterising or ray casting
-    std::size_t triangles = 0;
-  };
+  /// The sample's picture by `method` (Scene's draw_sample): on `worker`'s single-thread pool,
+  /// or on `threads` threads when more than one (with `floor`, if given: the floor scene's
+  /// board, on which the section is stood by its lowest point). Counts the meshes' triangles
+  /// and failed samples. Throws Stopped or ProductionError.
+  using Picture = SamplePicture;
   Picture picture(RenderSettings::Method method,
     const Sample& sample,
     const imaging::Camera& camera,
@@ -185,8 +180,6 @@ public:
   std::size_t triangles() const { return triangles_; }
 
 private:
-  Section section(const Sample& sample, int worker);
-
   const Job& job_;
   std::vector<std::unique_ptr<PictureKit>> kits_;
   std::vector<std::shared_ptr<ThreadPool>> pools_;

@@ -69,10 +69,7 @@ int TestShapeSources(int, char*[])
     ball->GetCoordinateRange(0, range);
     FREPKIT_CHECK(failures, range[0] < -2.0 && range[0] > -3.5 && range[1] > 2.0);
     // Meshing culls (the distance's enclosures) and gives a closed surface.
-    frep::mesh::Grid grid;
-    grid.lo = { -3, -3, -3 };
-    grid.hi = { 3, 3, 3 };
-    grid.samples = { 64, 64, 64 };
+    const frep::GridSpec grid{ { { -3, 3, 64 }, { -3, 3, 64 }, { -3, 3, 64 } } };
     const frep::mesh::ExtractResult r = frep::mesh::extract_surface(ball->GetTape(), grid);
     FREPKIT_CHECK(failures, r.ok());
     const frep::mesh::MeshTopology t = frep::mesh::analyse_topology(r.surface);

@@ -51,12 +51,10 @@ std::shared_ptr<const Tape> compile(const std::string& text, std::vector<double>
   return compiled.model->specialise(spec);
 }
 
-Grid cube_grid(double half, std::int64_t n)
+GridSpec cube_grid(double half, std::int64_t n, int axes = 3)
 {
-  Grid g;
-  g.lo = { -half, -half, -half };
-  g.hi = { half, half, half };
-  g.samples = { n, n, n };
+  GridSpec g;
+  g.axes.assign(static_cast<std::size_t>(axes), GridAxis{ -half, half, n });
   return g;
 }
 
@@ -185,7 +183,7 @@ TEST(SurfaceExtraction, CullingGivesTheDenseMeshAndThreadsDoNotMatter)
                             " sp = 49 - x[1]^2 - x[2]^2 - x[3]^2;"
                             " c = hfCylinderZ(x, c0, 2);"
                             " my_model = (b \\ sp) | c; }");
-  Grid grid = cube_grid(7.3, 70);
+  GridSpec grid = cube_grid(7.3, 70);
   ExtractOptions dense;
   dense.cull = false;
   dense.threads = 1;
@@ -220,7 +218,9 @@ std::vector<std::uint32_t> bits_of(const std::vector<float>& v)
 /// points, triangles, normals and attributes bit for bit (the values are the same, so is all).
 /// Returns the instructions run per sample with and without.
 std::pair<double, double> expect_simplification_changes_nothing(
-  const std::shared_ptr<const Tape>& tape, const Grid& grid, const std::string& what)
+  const std::shared_ptr<const Tape>& tape,
+  const GridSpec& grid,
+  const std::string& what)
 {
   ExtractOptions simplified;
   simplified.threads = 2;
@@ -284,18 +284,20 @@ TEST(SurfaceExtraction, SimplificationChangesNothingOnTheExternalModels)
       continue;
     }
     // The box of the reference points (where the model's author looked at it).
-    Grid grid;
-    grid.lo = { 1e300, 1e300, 1e300 };
-    grid.hi = { -1e300, -1e300, -1e300 };
+    GridSpec grid = cube_grid(0, 64);
+    for (GridAxis& axis : grid.axes)
+    {
+      axis.lo = 1e300;
+      axis.hi = -1e300;
+    }
     for (const fc::CasePoint& p : c.points)
     {
       for (int k = 0; k < 3; ++k)
       {
-        grid.lo[k] = std::min(grid.lo[k], p.x[k]);
-        grid.hi[k] = std::max(grid.hi[k], p.x[k]);
+        grid.axes[k].lo = std::min(grid.axes[k].lo, p.x[k]);
+        grid.axes[k].hi = std::max(grid.axes[k].hi, p.x[k]);
       }
     }
-    grid.samples = { 64, 64, 64 };
     expect_simplification_changes_nothing(compiled.model->tape(c.points.front().a), grid, c.id());
     ++meshed;
   }
@@ -306,8 +308,8 @@ TEST(SurfaceExtraction, PiecesTogetherGiveTheWholeMesh)
 {
   // A shape cut by the box, so caps are involved; 3 uneven slabs along z and 2 along x.
   const auto tape = compile(sphere_model);
-  Grid grid = cube_grid(6, 61);
-  grid.lo[2] = -2.0;
+  GridSpec grid = cube_grid(6, 61);
+  grid.axes[2].lo = -2.0;
   const ExtractResult whole = extract_surface(tape, grid);
   ASSERT_TRUE(whole.ok());
   Surface joined;
@@ -315,10 +317,13 @@ TEST(SurfaceExtraction, PiecesTogetherGiveTheWholeMesh)
   {
     for (auto [x0, x1] : { std::pair<int, int>{ 0, 31 }, { 31, 60 } })
     {
-      ExtractOptions piece;
-      piece.cells_begin = { x0, 0, z0 };
-      piece.cells_end = { x1, 0, z1 };
-      const ExtractResult r = extract_surface(tape, grid, piece);
+      // The cells [x0, x1) x all x [z0, z1): the samples from x0 to x1, neighbours sharing one.
+      GridSpec piece = grid;
+      piece.axes[0].begin = x0;
+      piece.axes[0].end = x1 + 1;
+      piece.axes[2].begin = z0;
+      piece.axes[2].end = z1 + 1;
+      const ExtractResult r = extract_surface(tape, piece);
       ASSERT_TRUE(r.ok()) << r.error;
       const auto offset = static_cast<std::uint32_t>(joined.point_count());
       joined.points.insert(joined.points.end(), r.surface.points.begin(), r.surface.points.end());
@@ -329,10 +334,16 @@ TEST(SurfaceExtraction, PiecesTogetherGiveTheWholeMesh)
     }
   }
   EXPECT_EQ(canonical_triangles(joined), canonical_triangles(whole.surface));
-  ExtractOptions outside;
-  outside.cells_begin = { 0, 0, 50 };
-  outside.cells_end = { 0, 0, 70 };
-  EXPECT_NE(extract_surface(tape, grid, outside).error.find("cell range"), std::string::npos);
+  GridSpec outside = grid;
+  outside.axes[2].begin = 50;
+  outside.axes[2].end = 70;
+  EXPECT_NE(extract_surface(tape, outside).error.find("the part [50, 70) is not a range"),
+    std::string::npos);
+  GridSpec no_cell = grid;
+  no_cell.axes[0].begin = 7;
+  no_cell.axes[0].end = 8;
+  EXPECT_NE(
+    extract_surface(tape, no_cell).error.find("at least 2 of the samples"), std::string::npos);
 }
 
 TEST(SurfaceExtraction, ShapeCutByTheBoxIsCapped)
@@ -348,8 +359,8 @@ TEST(SurfaceExtraction, ShapeCutByTheBoxIsCapped)
   open.cap_boundary = false;
   EXPECT_EQ(extract_surface(tape, cube_grid(2.5, 20), open).surface.cell_count(), 0u);
   // Half in, half out: closed, volume of the half ball cut by the plane.
-  Grid half = cube_grid(6, 97);
-  half.lo[2] = 0.0;
+  GridSpec half = cube_grid(6, 97);
+  half.axes[2].lo = 0.0;
   const ExtractResult h = extract_surface(tape, half);
   expect_closed(h.surface, "half sphere");
   const double volume = 2.0 / 3.0 * std::numbers::pi * 125.0;
@@ -431,11 +442,13 @@ TEST(SurfaceExtraction, RunTimeErrorsAreOutsideAndCounted)
 TEST(SurfaceExtraction, BadRequestsAreErrorsNotCrashes)
 {
   const auto tape = compile(sphere_model);
-  Grid flat = cube_grid(6, 32);
-  flat.hi[1] = flat.lo[1];
-  EXPECT_NE(extract_surface(tape, flat).error.find("box"), std::string::npos);
-  Grid one = cube_grid(6, 32);
-  one.samples[2] = 1;
+  GridSpec flat = cube_grid(6, 32);
+  flat.axes[1].hi = flat.axes[1].lo;
+  EXPECT_NE(
+    extract_surface(tape, flat).error.find("the box's minimum must be less than its maximum"),
+    std::string::npos);
+  GridSpec one = cube_grid(6, 32);
+  one.axes[2].samples = 1;
   EXPECT_NE(extract_surface(tape, one).error.find("at least 2 samples"), std::string::npos);
   const auto start = std::chrono::steady_clock::now();
   const ExtractResult huge = extract_surface(tape, cube_grid(6, 100000));
@@ -445,13 +458,20 @@ TEST(SurfaceExtraction, BadRequestsAreErrorsNotCrashes)
   const auto four_d = compile("my_model(x[4], a[1]) { my_model = 1 - x[1]^2 - x[4]^2; }");
   EXPECT_NE(extract_surface(four_d, cube_grid(2, 8)).error.find("4 free coordinates"),
     std::string::npos);
+  EXPECT_NE(extract_surface(tape, cube_grid(2, 8, 2)).error.find("the grid has 2 axes; a surface"),
+    std::string::npos);
   // Nothing in the box: an empty mesh, not an error.
-  const ExtractResult empty = extract_surface(compile(sphere_model), [] {
-    Grid g = cube_grid(1, 16);
-    g.lo = { 20, 20, 20 };
-    g.hi = { 22, 22, 22 };
-    return g;
-  }());
+  const ExtractResult empty = extract_surface(compile(sphere_model),
+    []
+    {
+      GridSpec g = cube_grid(1, 16);
+      for (GridAxis& axis : g.axes)
+      {
+        axis.lo = 20;
+        axis.hi = 22;
+      }
+      return g;
+    }());
   EXPECT_TRUE(empty.ok());
   EXPECT_EQ(empty.surface.cell_count(), 0u);
 }
@@ -517,7 +537,7 @@ TEST(SurfaceExtraction, UsesEveryThreadOfThePool)
 TEST(ContourExtraction, CircleIsOneClosedCounterClockwiseLoop)
 {
   const auto tape = compile("my_model(x[2], a[1]) { my_model = 25 - x[1]^2 - x[2]^2; }");
-  Grid grid = cube_grid(6, 200);
+  const GridSpec grid = cube_grid(6, 200, 2);
   const ExtractResult r = extract_contour(tape, grid);
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(r.surface.dimension, 2);
@@ -570,7 +590,7 @@ TEST(SurfaceExtraction, ExternalModelsGiveClosedMeshes)
     // The box of the expected values.
     std::filesystem::path expected = entry.path();
     expected.replace_extension(".expected.txt");
-    Grid grid = cube_grid(10, 40);
+    GridSpec grid = cube_grid(10, 40);
     std::ifstream values(expected);
     std::array<double, 3> lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
     double x, y, z;
@@ -582,8 +602,7 @@ TEST(SurfaceExtraction, ExternalModelsGiveClosedMeshes)
     }
     if (lo[0] < hi[0] && lo[1] < hi[1] && lo[2] < hi[2])
     {
-      grid.lo = lo;
-      grid.hi = hi;
+      grid = box_grid(lo, hi, std::array<std::int64_t, 3>{ 40, 40, 40 });
     }
     const ExtractResult r = extract_surface(compiled.model->tape(), grid);
     ASSERT_TRUE(r.ok()) << entry.path() << ": " << r.error;

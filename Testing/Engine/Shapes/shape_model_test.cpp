@@ -41,10 +41,7 @@ TEST(ShapeModels, AMeshBlendedWithASphereMeshesClosedAndCulls)
     "my_model(x[3], a[1]) { array c[3]; c = [1.5, 0, 0]; my_model = hfBlendUni(blob(x), hfSphere(x, c, 0.7), 0.3, 1, 1); }",
     users);
   ASSERT_TRUE(model);
-  mesh::Grid grid;
-  grid.lo = { -2, -2, -2 };
-  grid.hi = { 3, 2, 2 };
-  grid.samples = { 64, 52, 52 };
+  const GridSpec grid{ { { -2, 3, 64 }, { -2, 2, 52 }, { -2, 2, 52 } } };
   const mesh::ExtractResult r = mesh::extract_surface(model->tape(), grid);
   ASSERT_TRUE(r.ok()) << r.error;
   const mesh::MeshTopology t = mesh::analyse_topology(r.surface);
@@ -88,10 +85,7 @@ TEST(ShapeModels, AVolumeAndTheWrapperModel)
   EXPECT_GT(p.value(centre), 0.9);
   const double out[3] = { 1.4, 0, 0 };
   EXPECT_LT(p.value(out), 0);
-  mesh::Grid grid;
-  grid.lo = { -2, -2, -2 };
-  grid.hi = { 2, 2, 2 };
-  grid.samples = { 48, 48, 48 };
+  const GridSpec grid{ { { -2, 2, 48 }, { -2, 2, 48 }, { -2, 2, 48 } } };
   const mesh::ExtractResult r = mesh::extract_surface(model->tape(), grid);
   ASSERT_TRUE(r.ok()) << r.error;
   const mesh::MeshTopology t = mesh::analyse_topology(r.surface);

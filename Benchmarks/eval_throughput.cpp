@@ -156,6 +156,16 @@ void specialise(benchmark::State& state, const Prepared* p)
   state.counters["instructions"] = static_cast<double>(p->tape->code.size());
 }
 
+void parse(benchmark::State& state, const Prepared* p)
+{
+  for (auto _ : state)
+  {
+    frep::ParseResult parsed = frep::parse_program(p->model.text, p->model.name);
+    benchmark::DoNotOptimize(parsed.program.get());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * p->model.text.size()));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -180,6 +190,8 @@ int main(int argc, char** argv)
       ->Unit(benchmark::kMillisecond)
       ->MinTime(1.0);
     benchmark::RegisterBenchmark(("Specialise/" + name).c_str(), specialise, &p)
+      ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Parse/" + name).c_str(), parse, &p)
       ->Unit(benchmark::kMicrosecond);
   }
   benchmark::RunSpecifiedBenchmarks();

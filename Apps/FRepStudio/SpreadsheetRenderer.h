@@ -61,7 +61,6 @@ public:
 
   /// Cells in reading order (column fastest, then row).
   std::size_t cellCount() const { return plan_.cells.size(); }
-  const frep::mapping::Plan& plan() const { return plan_; }
 
   /// Cell i's picture; a null image when cancelled, or with `error` set when it failed.
   QImage cell(std::size_t i, const std::function<bool()>& keep_going, std::string* error) const;

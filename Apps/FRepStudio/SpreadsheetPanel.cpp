@@ -266,7 +266,7 @@ void SpreadsheetPanel::rebuild()
   // cell by cell in reading order; each finished cell is posted to the UI thread, where it is
   // dropped if a newer grid has replaced this one meanwhile.
   jobs_.start(
-    [this, generation, request = std::move(request)]
+    [this, generation, request = std::move(request), previous = last_framing_]
     {
       auto keep_going = [this, generation] { return generation_.load() == generation; };
       auto post_error = [this, generation](const std::string& error)
@@ -281,15 +281,33 @@ void SpreadsheetPanel::rebuild()
           },
           Qt::QueuedConnection);
       };
+      auto framing_progress = [this, generation, cells = request.row_values.size() *
+                                          std::max<std::size_t>(1, request.column_values.size())](
+                                double fraction)
+      {
+        QMetaObject::invokeMethod(
+          this,
+          [this, generation, cells, fraction]
+          {
+            if (generation_.load() == generation && finished_ == 0)
+              status_->setText(tr("Framing %1 cells: %2%").arg(cells).arg(
+                static_cast<int>(100.0 * fraction)));
+          },
+          Qt::QueuedConnection);
+      };
       std::string error;
-      const std::unique_ptr<SheetRenderer> renderer =
-        SheetRenderer::prepare(request, engine_pool_, keep_going, &error);
+      const std::unique_ptr<SheetRenderer> renderer = SheetRenderer::prepare(
+        request, engine_pool_, keep_going, &error, previous, framing_progress);
       if (!renderer)
       {
         if (!error.empty())
           post_error(error);
         return;
       }
+      QMetaObject::invokeMethod(
+        this,
+        [this, framing = renderer->framing()] { last_framing_ = framing; },
+        Qt::QueuedConnection);
       for (std::size_t i = 0; i < renderer->cellCount() && keep_going(); ++i)
       {
         QImage picture = renderer->cell(i, keep_going, &error);

@@ -95,6 +95,8 @@ private:
   std::atomic<std::uint64_t> generation_{ 0 };
   QThreadPool jobs_;
   std::shared_ptr<frep::ThreadPool> engine_pool_;
+  /// The last sheet's framing (UI thread): a sheet drawn another way reuses it.
+  std::shared_ptr<const SheetFraming> last_framing_;
 };
 
 } // namespace frepstudio

@@ -5,6 +5,7 @@
 #include "SectionTape.h"
 
 #include "Eval/thread_pool.h"
+#include "Mapping/mapping_json.h"
 #include "Scene/pictures.h"
 #include "Scene/sample_picture.h"
 
@@ -48,6 +49,17 @@ fm::Channel grid_channel(int grid_axis, const std::vector<double>& values)
   c.grid_axis = grid_axis;
   c.values = values;
   return c;
+}
+
+// The sheet's mapping as text without what only changes how cells are drawn: two sheets with
+// the same text frame the same solids from the same direction.
+std::string framing_key(fm::Spec spec)
+{
+  spec.render.method = fm::RenderSettings::Method::Mesh;
+  spec.world.resolution = 0;
+  spec.spreadsheet.cell_size = 0;
+  spec.render.width = spec.render.height = 0;
+  return fm::save_mapping(spec);
 }
 
 fm::Channel fixed_channel(double value)
@@ -94,7 +106,9 @@ fm::Spec sheet_mapping(const SheetRequest& request, bool model_colours)
 std::unique_ptr<SheetRenderer> SheetRenderer::prepare(const SheetRequest& request,
   const std::shared_ptr<frep::ThreadPool>& pool,
   const std::function<bool()>& keep_going,
-  std::string* error)
+  std::string* error,
+  const std::shared_ptr<const SheetFraming>& previous,
+  const std::function<void(double)>& progress)
 {
   const CellRequest& base = request.base;
   if (!base.model || base.model->x_dim() < 4)
@@ -127,9 +141,28 @@ std::unique_ptr<SheetRenderer> SheetRenderer::prepare(const SheetRequest& reques
   sheet->plan_ = std::move(planned.plan);
   if (!keep_going())
     return nullptr;
-  sheet->framing_ =
-    fm::frame_solids(sheet->spec_.render, *base.model, base.parameters, sheet->plan_, pool.get());
-  sheet->camera_ = fm::plan_camera(sheet->plan_, sheet->spec_.render, 1.0, sheet->framing_);
+  std::string key = framing_key(sheet->spec_);
+  if (previous && previous->model == base.model && previous->mapping == key)
+  {
+    sheet->framing_ = previous;
+  }
+  else
+  {
+    frep::RunControl run;
+    run.pool = pool;
+    run.cancel = [&keep_going] { return !keep_going(); };
+    if (progress)
+      run.progress = [&progress](double f) { progress(f); return true; };
+    auto framed = std::make_shared<SheetFraming>();
+    framed->model = base.model;
+    framed->mapping = std::move(key);
+    framed->framing =
+      fm::frame_solids(sheet->spec_.render, *base.model, base.parameters, sheet->plan_, run);
+    if (framed->framing.cancelled)
+      return nullptr;
+    sheet->framing_ = std::move(framed);
+  }
+  sheet->camera_ = fm::plan_camera(sheet->plan_, sheet->spec_.render, 1.0, sheet->framing_->framing);
   return keep_going() ? std::move(sheet) : nullptr;
 }
 
@@ -155,7 +188,7 @@ QImage SheetRenderer::cell(std::size_t i,
     spec_.render,
     spec_.render.method,
     options,
-    framing_);
+    framing_->framing);
   if (!p.ok())
   {
     if (!p.cancelled)

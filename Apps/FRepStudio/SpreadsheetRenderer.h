@@ -48,16 +48,33 @@ struct SheetRequest
 /// the model's s[1..3] colours when `model_colours`; mesh or ray-cast cells.
 frep::mapping::Spec sheet_mapping(const SheetRequest& request, bool model_colours);
 
+/// A sheet's framing and what it was found for: a sheet that differs only in how its cells are
+/// drawn (mesh or rays, resolution, pixels) frames the same, so it reuses this one instead of
+/// framing again (about a second for Meta5D's 25 cells on 2 cores).
+struct SheetFraming
+{
+  std::shared_ptr<const frep::Model> model;
+  std::string mapping; ///< the sheet's mapping without its drawing settings (save_mapping)
+  frep::mapping::Framing framing;
+};
+
 class SheetRenderer
 {
 public:
   /// Plans the sheet and frames its solids (frame_solids over every cell: one camera, as
-  /// `frepkit map`'s). Null with `error` set when the sheet cannot be planned or the model cannot
-  /// be cut (fewer than 4 coordinates); null with no error when `keep_going` said stop.
+  /// `frepkit map`'s), or takes `previous`' framing when it was found for the same sheet.
+  /// `progress`, when given, is called on this thread with the fraction of solids framed. Null
+  /// with `error` set when the sheet cannot be planned or the model cannot be cut (fewer than 4
+  /// coordinates); null with no error when `keep_going` said stop.
   static std::unique_ptr<SheetRenderer> prepare(const SheetRequest& request,
     const std::shared_ptr<frep::ThreadPool>& pool,
     const std::function<bool()>& keep_going,
-    std::string* error);
+    std::string* error,
+    const std::shared_ptr<const SheetFraming>& previous = {},
+    const std::function<void(double)>& progress = {});
+
+  /// The framing this sheet's cells are drawn with, for the next sheet's prepare.
+  const std::shared_ptr<const SheetFraming>& framing() const { return framing_; }
 
   /// Cells in reading order (column fastest, then row).
   std::size_t cellCount() const { return plan_.cells.size(); }
@@ -71,7 +88,7 @@ private:
   CellRequest base_;
   frep::mapping::Spec spec_;
   frep::mapping::Plan plan_;
-  frep::mapping::Framing framing_;
+  std::shared_ptr<const SheetFraming> framing_;
   frep::imaging::Camera camera_;
   std::shared_ptr<frep::ThreadPool> pool_;
 };

@@ -86,10 +86,11 @@ void frame_solids(Job& job, const Products& products, int workers, Record& recor
     return;
   }
   const auto t0 = Clock::now();
-  const std::shared_ptr<ThreadPool> pool =
-    job.options.pool ? job.options.pool : std::make_shared<ThreadPool>(workers);
+  RunControl run;
+  run.pool = job.options.pool ? job.options.pool : std::make_shared<ThreadPool>(workers);
+  run.cancel = [&job] { return job.stopped(); };
   job.framing =
-    mapping::frame_solids(job.spec().render, job.model(), job.inputs.parameters, job.plan, pool.get());
+    mapping::frame_solids(job.spec().render, job.model(), job.inputs.parameters, job.plan, run);
   job.throw_if_stopped();
   const std::size_t samples = 1 + job.plan.cells.size() + job.plan.frames.size();
   record.stages.push_back({ "framing",

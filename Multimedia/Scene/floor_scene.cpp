@@ -185,7 +185,8 @@ Sample stand_on_floor(const Model& model,
   const Plan& plan,
   const Sample& frame,
   const raycast::Floor& floor,
-  int threads)
+  int threads,
+  const mesh::SolidBounds* bounds)
 {
   if (!raycast_supported(plan) || static_cast<int>(frame.values.size()) != model.x_dim())
   {
@@ -205,6 +206,10 @@ Sample stand_on_floor(const Model& model,
     shape.box[k] = frep::Interval{ plan.model_box[k].lo, plan.model_box[k].hi };
   }
   shape.to_world = raycast_world_map(plan, frame);
+  if (bounds)
+  {
+    shape.bounds = *bounds;
+  }
   const std::optional<double> lowest = raycast::lowest_z(shape, 128, threads);
   Sample s = frame;
   if (lowest)

@@ -57,12 +57,14 @@ double stand_on_floor(Section& section, const raycast::Floor& floor);
 /// The ray-cast counterpart: `frame` (already on_floor) with the vertical translation that puts
 /// the lowest point of its solid (raycast::lowest_z of the section's tape, mapped to the world
 /// as raycast_sample maps it) at the floor's height. Unchanged when the solid is empty or the
-/// plan cannot be ray-cast. `threads` 0 = all cores.
+/// plan cannot be ray-cast. `threads` 0 = all cores. `bounds`: the solid's bounds when the
+/// caller has them (Framing::solid_of), else searched again.
 Sample stand_on_floor(const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
   const Sample& frame,
   const raycast::Floor& floor,
-  int threads = 1);
+  int threads = 1,
+  const mesh::SolidBounds* bounds = nullptr);
 
 } // namespace frep::mapping

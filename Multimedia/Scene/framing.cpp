@@ -8,6 +8,8 @@
 #include "Eval/thread_pool.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <exception>
 #include <limits>
 #include <string>
@@ -44,6 +46,7 @@ struct Seen
 {
   Box world; // the solid's world box
   Box view;  // its extent along the view's right, up and forward
+  std::optional<mesh::SolidBounds> bounds; // in the model box (3-D sections only)
 };
 
 Box extent_in(const imaging::CameraFrame& view,
@@ -149,6 +152,10 @@ std::optional<Seen> see(const Model& model,
     }
     Seen seen;
     seen.world = moved(world.world_box(model_box), sample.transform);
+    if (axes == 3)
+    {
+      seen.bounds = shape.bounds;
+    }
     if (!view)
     {
       return seen;
@@ -172,6 +179,16 @@ std::optional<Seen> see(const Model& model,
   {
     return std::nullopt; // the section's picture reports the same failure
   }
+}
+
+std::vector<std::uint64_t> bits_of(const std::vector<double>& values)
+{
+  std::vector<std::uint64_t> bits(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    bits[i] = std::bit_cast<std::uint64_t>(values[i]);
+  }
+  return bits;
 }
 
 Box join(const Box& a, const Box& b)
@@ -198,11 +215,22 @@ std::optional<std::array<Interval, 3>> solid_world_box(const Model& model,
   return seen ? std::optional<Box>(seen->world) : std::nullopt;
 }
 
+const mesh::SolidBounds* Framing::solid_of(const Sample& sample,
+  const std::vector<double>& with) const
+{
+  if (with != parameters)
+  {
+    return nullptr;
+  }
+  const auto found = solids.find(bits_of(sample.values));
+  return found == solids.end() ? nullptr : &found->second;
+}
+
 Framing frame_solids(const RenderSettings& settings,
   const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
-  ThreadPool* pool)
+  const RunControl& run)
 {
   std::string error;
   const std::unique_ptr<WorldMapping> world = WorldMapping::make(plan, error);
@@ -221,23 +249,45 @@ Framing frame_solids(const RenderSettings& settings,
   }
   const imaging::CameraFrame view = imaging::view_frame(settings.azimuth, settings.elevation);
   std::vector<std::optional<Seen>> seen(samples.size());
-  const auto look = [&](std::size_t i, int)
-  { seen[i] = see(model, parameters, plan, *world, &view, *samples[i]); };
-  if (pool)
+  std::atomic<bool> stop{ false };
+  std::atomic<std::size_t> done{ 0 };
+  double reported = 0.0; // by the calling thread only
+  const auto look = [&](std::size_t i, int slot)
   {
-    pool->parallel_for(samples.size(), look);
-  }
-  else
-  {
-    for (std::size_t i = 0; i < samples.size(); ++i)
+    if (stop.load(std::memory_order_relaxed) || run.cancel_requested())
     {
-      look(i, 0);
+      stop = true;
+      return;
     }
+    seen[i] = see(model, parameters, plan, *world, &view, *samples[i]);
+    const std::size_t finished = done.fetch_add(1) + 1;
+    if (slot == 0 && run.progress) // the calling thread is slot 0: progress is reported there
+    {
+      reported = static_cast<double>(finished) / static_cast<double>(samples.size());
+      stop = stop || !run.progress(reported);
+    }
+  };
+  run.thread_pool()->parallel_for(samples.size(), look);
+  if (stop)
+  {
+    Framing stopped;
+    stopped.cancelled = true;
+    return stopped;
+  }
+  if (run.progress && reported < 1.0)
+  {
+    run.progress(1.0); // another thread saw the last sample
   }
   Framing framing;
+  framing.parameters = parameters;
   std::optional<Box> across; // the union of the extents along the view
-  for (const std::optional<Seen>& s : seen)
+  for (std::size_t i = 0; i < seen.size(); ++i)
   {
+    const std::optional<Seen>& s = seen[i];
+    if (s && s->bounds)
+    {
+      framing.solids.emplace(bits_of(samples[i]->values), *s->bounds);
+    }
     if (s)
     {
       framing.box = framing.box ? join(*framing.box, s->world) : s->world;

@@ -15,15 +15,14 @@
 #include "Imaging/camera.h"
 
 #include "Compiler/model.h"
+#include "Eval/run_control.h"
+#include "Mesh/solid_bounds.h"
 
 #include <array>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
-
-namespace frep
-{
-class ThreadPool;
-}
 
 namespace frep::mapping
 {
@@ -45,7 +44,18 @@ struct Framing
   /// Each frame's solid's world box (plan.frames' order; empty: no solid): where the floor
   /// scene's camera must see a shape standing on the board.
   std::vector<std::optional<std::array<Interval, 3>>> frames;
+  /// The bounds of each framed 3-D section's solid in the plan's model box (raycast::solid_bounds
+  /// of its tape), by the bits of the sample's coordinate values (equal values, equal tape; bits,
+  /// because a world coordinate's value is NaN): ray casting a framed sample uses them instead
+  /// of searching again (solid_of; draw_sample does).
+  std::map<std::vector<std::uint64_t>, mesh::SolidBounds> solids;
+  std::vector<double> parameters; ///< the a[] values the solids were bounded with
+  /// frame_solids was stopped (cancel, or progress returning false): nothing is framed.
+  bool cancelled = false;
   bool empty() const { return !box; }
+  /// `sample`'s solid bounds if this framing holds them for these parameters, else null.
+  const mesh::SolidBounds* solid_of(const Sample& sample,
+    const std::vector<double>& parameters) const;
 };
 
 /// The world box holding `sample`'s solid: its section's tape (section_specialisation) bounded
@@ -62,12 +72,14 @@ std::optional<std::array<Interval, 3>> solid_world_box(const Model& model,
 /// spreadsheet, the shape alone and the frames share one framing, and frames kept from an
 /// earlier run match new ones — seen from `settings`' azimuth and elevation. Empty when the
 /// settings have a view_box (the user's box wins) or no sample has a solid (the plan's world
-/// box). `pool`, when given, spreads the samples over its threads.
+/// box). `run` (Eval/run_control.h): the samples are spread over its pool or threads (default
+/// all cores); `cancel` is polled before each sample; `progress` is called on the calling thread
+/// with the fraction of samples seen. Stopped by either: an empty framing with `cancelled` set.
 Framing frame_solids(const RenderSettings& settings,
   const Model& model,
   const std::vector<double>& parameters,
   const Plan& plan,
-  ThreadPool* pool = nullptr);
+  const RunControl& run = {});
 
 /// The box the pictures show: the settings' view_box, else the framing's box, else the plan's
 /// world box.

@@ -34,6 +34,7 @@ struct Drawing
   int height;
   const DrawOptions& options;
   int threads; ///< the pool's participants, or the options' threads
+  const mesh::SolidBounds* bounds; ///< the framing's bounds of the sample's solid, or null
 };
 
 void draw_by_rays(SamplePicture& p, const Drawing& d)
@@ -45,8 +46,10 @@ void draw_by_rays(SamplePicture& p, const Drawing& d)
   // On the floor scene's board the solid stands on its lowest point.
   const Sample placed =
     d.options.floor
-      ? stand_on_floor(d.model, d.parameters, d.plan, d.sample, *d.options.floor, d.threads)
+      ? stand_on_floor(
+          d.model, d.parameters, d.plan, d.sample, *d.options.floor, d.threads, d.bounds)
       : d.sample;
+  ro.bounds = d.bounds;
   RaycastPicture r =
     raycast_sample(d.model, d.parameters, d.plan, placed, d.camera, d.width, d.height, ro);
   if (d.options.cancel_requested())
@@ -123,7 +126,8 @@ SamplePicture draw_sample(const Model& model,
     width,
     height,
     options,
-    options.pool ? options.pool->size() : options.threads };
+    options.pool ? options.pool->size() : options.threads,
+    framing.solid_of(sample, parameters) };
   const auto start = Clock::now();
   try
   {

@@ -91,6 +91,10 @@ RaycastPicture raycast_sample(const Model& model,
     shape.box[k] = frep::Interval{ plan.model_box[k].lo, plan.model_box[k].hi };
   }
   shape.to_world = raycast_world_map(plan, sample);
+  if (options.bounds)
+  {
+    shape.bounds = *options.bounds;
+  }
   const imaging::Rgba c = imaging::srgb(sample.colour[0], sample.colour[1], sample.colour[2]);
   shape.colour = { c.r, c.g, c.b };
   shape.opacity = std::clamp(sample.opacity, 0.0, 1.0);

@@ -34,6 +34,9 @@ struct RaycastOptions : RunControl
   RaycastOptions() { threads = 1; }
   const raycast::Floor* floor = nullptr;
   bool self_shadows = false;
+  /// The section's solid bounds when the caller has them (Framing::solid_of: the same tape and
+  /// model box), so the ray caster does not search them again. Default none.
+  const mesh::SolidBounds* bounds = nullptr;
 };
 
 struct RaycastPicture

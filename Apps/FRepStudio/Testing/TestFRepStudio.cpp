@@ -759,6 +759,24 @@ void TestFRepStudio::spreadsheetIsTheMappingsSheet()
             .isNull()); // cancelled: nothing
   QVERIFY(error.empty());
 
+  // Drawn by rays at another resolution, the same sheet frames the same: the framing is taken
+  // over, not found again. Other row values: framed again, with progress.
+  SheetRequest rays = request;
+  rays.base.raycast = true;
+  rays.base.resolution = 16;
+  const std::unique_ptr<SheetRenderer> drawn_by_rays =
+    SheetRenderer::prepare(rays, nullptr, keep_going, &error, sheet->framing());
+  QVERIFY2(drawn_by_rays, error.c_str());
+  QCOMPARE(drawn_by_rays->framing(), sheet->framing());
+  SheetRequest moved = request;
+  moved.row_values = { 0, 0.5, 0.8 };
+  std::vector<double> framed;
+  const std::unique_ptr<SheetRenderer> other = SheetRenderer::prepare(moved, nullptr, keep_going,
+    &error, sheet->framing(), [&framed](double f) { framed.push_back(f); });
+  QVERIFY2(other, error.c_str());
+  QVERIFY(other->framing() != sheet->framing());
+  QVERIFY(!framed.empty() && framed.back() == 1.0);
+
   // One coordinate beyond x1..x3: a column of rows. None: refused.
   request.base.model = compile("m(x[4], a[1]) { m = 1 + x[4] - x[1]^2 - x[2]^2 - x[3]^2; }");
   request.base.fixed_values = { 0.5 };

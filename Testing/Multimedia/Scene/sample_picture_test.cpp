@@ -138,3 +138,30 @@ TEST(DrawSample, CancelledOrBadRequestsDrawNothing)
   EXPECT_FALSE(bad.error.empty());
   EXPECT_TRUE(bad.image.empty());
 }
+// The framing keeps each cell's solid bounds (the ray caster's search, done once for the
+// camera); draw_sample hands them on, so they must be the cell's own, and only for the
+// parameters they were found with.
+TEST(DrawSample, FramedSolidsAreEachCellsOwnBounds)
+{
+  const Sheet s;
+  std::vector<double> widths;
+  for (const mapping::Sample& cell : s.plan.cells)
+  {
+    const frep::mesh::SolidBounds* framed = s.framing.solid_of(cell, {});
+    ASSERT_NE(framed, nullptr);
+    const frep::mesh::SolidBounds own = frep::raycast::solid_bounds(
+      s.model->specialise(mapping::section_specialisation(s.plan, cell, {})),
+      std::vector<frep::Interval>{ { -3, 3 }, { -3, 3 }, { -3, 3 } });
+    ASSERT_TRUE(own.bounded());
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(framed->box[k].lo, own.box[k].lo) << cell.label;
+      EXPECT_EQ(framed->box[k].hi, own.box[k].hi) << cell.label;
+    }
+    widths.push_back(own.box[0].hi - own.box[0].lo);
+    EXPECT_EQ(s.framing.solid_of(cell, { 1.0 }), nullptr); // other a[] values: another tape
+  }
+  ASSERT_EQ(widths.size(), 3u); // the ball grows with x4: three different bounds
+  EXPECT_LT(widths[0], widths[1]);
+  EXPECT_LT(widths[1], widths[2]);
+}

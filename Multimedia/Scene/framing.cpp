@@ -215,9 +215,17 @@ std::optional<std::array<Interval, 3>> solid_world_box(const Model& model,
   return seen ? std::optional<Box>(seen->world) : std::nullopt;
 }
 
-const mesh::SolidBounds* Framing::solid_of(const Sample& sample,
+const mesh::SolidBounds* Framing::solid_of(const Plan& plan,
+  const Sample& sample,
   const std::vector<double>& with) const
 {
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    if (plan.model_box[k].lo != model_box[k].lo || plan.model_box[k].hi != model_box[k].hi)
+    {
+      return nullptr;
+    }
+  }
   if (with != parameters)
   {
     return nullptr;
@@ -280,6 +288,7 @@ Framing frame_solids(const RenderSettings& settings,
   }
   Framing framing;
   framing.parameters = parameters;
+  framing.model_box = plan.model_box;
   std::optional<Box> across; // the union of the extents along the view
   for (std::size_t i = 0; i < seen.size(); ++i)
   {

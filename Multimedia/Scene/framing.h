@@ -50,11 +50,14 @@ struct Framing
   /// of searching again (solid_of; draw_sample does).
   std::map<std::vector<std::uint64_t>, mesh::SolidBounds> solids;
   std::vector<double> parameters; ///< the a[] values the solids were bounded with
+  std::array<Interval, 3> model_box{}; ///< the plan's model box they were bounded in
   /// frame_solids was stopped (cancel, or progress returning false): nothing is framed.
   bool cancelled = false;
   bool empty() const { return !box; }
-  /// `sample`'s solid bounds if this framing holds them for these parameters, else null.
-  const mesh::SolidBounds* solid_of(const Sample& sample,
+  /// `sample`'s solid bounds if this framing holds them for this plan's model box and these
+  /// parameters, else null.
+  const mesh::SolidBounds* solid_of(const Plan& plan,
+    const Sample& sample,
     const std::vector<double>& parameters) const;
 };
 

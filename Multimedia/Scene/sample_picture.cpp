@@ -127,7 +127,7 @@ SamplePicture draw_sample(const Model& model,
     height,
     options,
     options.pool ? options.pool->size() : options.threads,
-    framing.solid_of(sample, parameters) };
+    framing.solid_of(plan, sample, parameters) };
   const auto start = Clock::now();
   try
   {

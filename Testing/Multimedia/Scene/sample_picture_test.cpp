@@ -147,7 +147,7 @@ TEST(DrawSample, FramedSolidsAreEachCellsOwnBounds)
   std::vector<double> widths;
   for (const mapping::Sample& cell : s.plan.cells)
   {
-    const frep::mesh::SolidBounds* framed = s.framing.solid_of(cell, {});
+    const frep::mesh::SolidBounds* framed = s.framing.solid_of(s.plan, cell, {});
     ASSERT_NE(framed, nullptr);
     const frep::mesh::SolidBounds own = frep::raycast::solid_bounds(
       s.model->specialise(mapping::section_specialisation(s.plan, cell, {})),
@@ -159,7 +159,10 @@ TEST(DrawSample, FramedSolidsAreEachCellsOwnBounds)
       EXPECT_EQ(framed->box[k].hi, own.box[k].hi) << cell.label;
     }
     widths.push_back(own.box[0].hi - own.box[0].lo);
-    EXPECT_EQ(s.framing.solid_of(cell, { 1.0 }), nullptr); // other a[] values: another tape
+    EXPECT_EQ(s.framing.solid_of(s.plan, cell, { 1.0 }), nullptr); // other a[]: another tape
+    mapping::Plan wider = s.plan; // another model box: other bounds
+    wider.model_box[0].hi = 4;
+    EXPECT_EQ(s.framing.solid_of(wider, cell, {}), nullptr);
   }
   ASSERT_EQ(widths.size(), 3u); // the ball grows with x4: three different bounds
   EXPECT_LT(widths[0], widths[1]);

@@ -8,6 +8,7 @@
 #include "Imaging/png_writer.h"
 #include "map_command.h"
 #include "mesh_command.h"
+#include "morph_command.h"
 #include "slice_command.h"
 #include "render_command.h"
 #include "user_error.h"
@@ -126,6 +127,8 @@ int main(int argc, char** argv)
   CLI::App* map = frepkit::add_map_command(app, map_options);
   frepkit::DemoOptions demo_options;
   CLI::App* demo = frepkit::add_demo_command(app, demo_options);
+  frepkit::MorphOptions morph_options;
+  CLI::App* morph = frepkit::add_morph_command(app, morph_options);
   // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
   app
     .add_subcommand("hfp",
@@ -173,6 +176,10 @@ int main(int argc, char** argv)
       if (demo->parsed())
       {
         return frepkit::run_demo(demo_options);
+      }
+      if (morph->parsed())
+      {
+        return frepkit::run_morph(morph_options);
       }
       return 0;
     });

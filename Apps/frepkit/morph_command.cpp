@@ -1,0 +1,125 @@
+#include "morph_command.h"
+
+#include "Durable/atomic_output.h"
+#include "Morph/morph_text.h"
+#include "model_loading.h"
+#include "user_error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <sstream>
+
+namespace frepkit
+{
+namespace
+{
+
+// "cat.hf:cat" -> {cat.hf, cat}; "cat.hf" -> {cat.hf, ""}. The part after the last ':' is an
+// object only when it is a name (no '/', '.' or '\\'), so paths with ':' still work.
+frep::morph::Key parse_key(const std::string& text)
+{
+  const std::size_t colon = text.rfind(':');
+  if (colon != std::string::npos && colon + 1 < text.size() &&
+      text.find_first_of("/.\\", colon + 1) == std::string::npos)
+  {
+    return { text.substr(0, colon), text.substr(colon + 1) };
+  }
+  return { text, std::string() };
+}
+
+// "2x2" -> {2, 2}; empty -> {keys}.
+std::vector<int> parse_lattice(const std::string& text, std::size_t keys)
+{
+  if (text.empty())
+    return { static_cast<int>(keys) };
+  std::vector<int> lattice;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, 'x'))
+  {
+    std::size_t used = 0;
+    int n = 0;
+    try
+    {
+      n = std::stoi(item, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || used != item.size())
+      throw UserError("--lattice " + text + ": expected node counts joined by x, e.g. 2x2 or 5x5");
+    lattice.push_back(n);
+  }
+  return lattice;
+}
+
+} // namespace
+
+CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
+{
+  CLI::App* morph = app.add_subcommand("morph",
+    "Write a metamorphosis: key shapes (HyperFun objects of the same coordinates) on a lattice "
+    "of parameters, blended into one HyperFun model with the parameters as its last "
+    "coordinates, each over [0, 1]. Linear on 2x2 is the paper's bilinear formula.");
+  morph->add_option("keys", options.keys,
+         "Key shapes FILE.hf or FILE.hf:OBJECT in lattice order, the first parameter fastest "
+         "(2x2: x4=0 x5=0, x4=1 x5=0, x4=0 x5=1, x4=1 x5=1)")
+    ->required();
+  morph->add_option("--lattice", options.lattice,
+    "Nodes per parameter, e.g. 2x2 (two parameters) or 5 (one); default: one parameter over "
+    "all keys");
+  morph->add_option("--scheme", options.scheme,
+          "Weights: linear, catmull-rom (through every key, C1) or b-spline (smooth, C2: "
+          "reaches the end keys only)")
+    ->check(CLI::IsMember({ "linear", "catmull-rom", "b-spline" }))
+    ->capture_default_str();
+  morph->add_option("--name", options.name, "The object written (my_model calls it)")
+    ->capture_default_str();
+  morph->add_flag("--paste", options.paste,
+    "Copy the keys' objects into the file (one file the original HyperFun reads); default: "
+    "call them from their files, loaded with --library");
+  morph->add_option("-o,--output", options.output, "The model file to write (- for stdout)")
+    ->required();
+  add_user_input_options(morph, options.user);
+  return morph;
+}
+
+int run_morph(const MorphOptions& options)
+{
+  frep::morph::MorphSpec spec;
+  for (const std::string& key : options.keys)
+    spec.keys.push_back(parse_key(key));
+  spec.lattice = parse_lattice(options.lattice, spec.keys.size());
+  spec.scheme = *frep::morph::interpolation_from_name(options.scheme);
+  spec.name = options.name;
+  const frep::morph::KeyPlacement placement =
+    options.paste ? frep::morph::KeyPlacement::Pasted : frep::morph::KeyPlacement::Library;
+  const frep::morph::MorphText morph =
+    frep::morph::write_morph(spec, placement, load_options(options.user));
+  if (!morph.ok())
+  {
+    std::cerr << frep::format_diagnostics(morph.diagnostics);
+    throw UserError("morph: " + std::to_string(morph.diagnostics.size()) +
+                    (morph.diagnostics.size() == 1 ? " error" : " errors") + ", nothing written");
+  }
+  frep::durable::AtomicOutput out(options.output);
+  out.stream() << morph.text;
+  out.commit();
+  if (options.output != "-")
+  {
+    std::cerr << "frepkit: wrote " << options.output << ": " << spec.name << " of x["
+              << morph.x_dim << "] from " << spec.keys.size() << " keys";
+    if (!morph.libraries.empty())
+    {
+      std::cerr << "; load it with";
+      for (const std::string& library : morph.libraries)
+        std::cerr << " --library " << library;
+    }
+    std::cerr << '\n';
+  }
+  return 0;
+}
+
+} // namespace frepkit

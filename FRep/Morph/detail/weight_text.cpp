@@ -1,0 +1,201 @@
+#include "Morph/detail/weight_text.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace frep::morph::weight_text
+{
+namespace
+{
+
+// Names of the axis x[c]'s scalars: mt (t clamped), ms (t (n - 1)), mu (the place in a
+// segment), mw_i (the weights); the B-spline's mb_r, ml_j, mr_j, mq, mv (Cox-de Boor).
+std::string v(const char* what, int c)
+{
+  return std::string(what) + std::to_string(c);
+}
+std::string v(const char* what, int c, int i)
+{
+  return v(what, c) + "_" + std::to_string(i);
+}
+
+std::string indent(int depth)
+{
+  return std::string(static_cast<std::size_t>(2 * depth), ' ');
+}
+
+// Segment i of Linear or Catmull-Rom, as lattice_weights.cpp's linear() and catmull_rom().
+std::string segment(int c, int n, int i, Interpolation scheme, int depth)
+{
+  const std::string u = v("mu", c), in = indent(depth);
+  std::string out = in + u + " = " + v("ms", c) + " - " + std::to_string(i) + ";\n";
+  if (scheme == Interpolation::Linear)
+  {
+    out += in + v("mw", c, i) + " = 1 - " + u + ";\n";
+    out += in + v("mw", c, i + 1) + " = " + u + ";\n";
+    return out;
+  }
+  const std::string terms[4] = {
+    "0.5*" + u + "*(-1 + " + u + "*(2 - " + u + "))",
+    "0.5*(2 + " + u + "*" + u + "*(-5 + 3*" + u + "))",
+    "0.5*" + u + "*(1 + " + u + "*(4 - 3*" + u + "))",
+    "0.5*" + u + "*" + u + "*(" + u + " - 1)",
+  };
+  std::map<int, std::string> node; // the end segments repeat the end node: its terms add up
+  for (int k = 0; k < 4; ++k)
+  {
+    const int at = std::clamp(i - 1 + k, 0, n - 1);
+    node[at] += (node[at].empty() ? "" : " + ") + terms[k];
+  }
+  for (const auto& [at, sum] : node)
+    out += in + v("mw", c, at) + " = " + sum + ";\n";
+  return out;
+}
+
+// Knot k of the clamped uniform B-spline of degree p over n nodes, as text.
+std::string knot(int k, int n, int p)
+{
+  if (k <= p)
+    return "0";
+  if (k >= n)
+    return "1";
+  return "(" + std::to_string(k - p) + "/" + std::to_string(n - p) + ")";
+}
+
+// The basis on knot span `span`, as lattice_weights.cpp's b_spline() (Cox-de Boor, unrolled).
+std::string span_basis(int c, int n, int span, int depth)
+{
+  const int p = std::min(3, n - 1);
+  const std::string in = indent(depth), t = v("mt", c), q = v("mq", c), saved = v("mv", c);
+  std::string out = in + v("mb", c, 0) + " = 1;\n";
+  for (int j = 1; j <= p; ++j)
+  {
+    out += in + v("ml", c, j) + " = " + t + " - " + knot(span + 1 - j, n, p) + ";\n";
+    out += in + v("mr", c, j) + " = " + knot(span + j, n, p) + " - " + t + ";\n";
+    out += in + saved + " = 0;\n";
+    for (int r = 0; r < j; ++r)
+    {
+      out += in + q + " = " + v("mb", c, r) + "/(" + v("mr", c, r + 1) + " + " +
+             v("ml", c, j - r) + ");\n";
+      out += in + v("mb", c, r) + " = " + saved + " + " + v("mr", c, r + 1) + "*" + q + ";\n";
+      out += in + saved + " = " + v("ml", c, j - r) + "*" + q + ";\n";
+    }
+    out += in + v("mb", c, j) + " = " + saved + ";\n";
+  }
+  for (int r = 0; r <= p; ++r)
+    out += in + v("mw", c, span - p + r) + " = " + v("mb", c, r) + ";\n";
+  return out;
+}
+
+// The chain "if <first test> then <first> else if ... else <last> endif; ...": `count` pieces,
+// piece i chosen by test(i) (the last one needs none).
+template <typename Test, typename Piece>
+std::string chain(int count, int depth, const Test& test, const Piece& piece)
+{
+  std::string out;
+  for (int i = 0; i + 1 < count; ++i)
+  {
+    out += indent(depth + i) + "if " + test(i) + " then\n" + piece(i, depth + i + 1) +
+           indent(depth + i) + "else\n";
+  }
+  out += piece(count - 1, depth + count);
+  for (int i = count - 2; i >= 0; --i)
+    out += indent(depth + i) + "endif;\n";
+  return out;
+}
+
+std::string interior(int c, int n, Interpolation scheme, int depth)
+{
+  if (scheme == Interpolation::BSpline)
+  {
+    const int p = std::min(3, n - 1);
+    return chain(
+      n - p, depth, [&](int i) { return v("mt", c) + " < " + knot(p + i + 1, n, p); },
+      [&](int i, int at) { return span_basis(c, n, p + i, at); });
+  }
+  std::string out = indent(depth) + v("ms", c) + " = " + v("mt", c) + "*" + std::to_string(n - 1) + ";\n";
+  return out + chain(
+                 n - 1, depth, [&](int i) { return v("ms", c) + " < " + std::to_string(i + 1); },
+                 [&](int i, int at) { return segment(c, n, i, scheme, at); });
+}
+
+bool nonzero_test(std::string& test, const std::string& weight)
+{
+  test += (test.empty() ? "" : " and ") + std::string("(") + weight + " < 0 or " + weight + " > 0)";
+  return true;
+}
+
+// The blend of the sub-lattice of axes 0..a at the higher axes' `offset`, as morph_text.h says.
+std::string blend(int a, std::size_t offset, int d, const std::vector<int>& lattice)
+{
+  if (a < 0)
+    return "mk" + std::to_string(offset);
+  std::size_t stride = 1;
+  for (int b = 0; b < a; ++b)
+    stride *= static_cast<std::size_t>(lattice[static_cast<std::size_t>(b)]);
+  std::string out;
+  for (int i = 0; i < lattice[static_cast<std::size_t>(a)]; ++i)
+  {
+    const std::string part = blend(a - 1, offset + static_cast<std::size_t>(i) * stride, d, lattice);
+    out += (i ? " + " : "") + (a == 0 ? part : "(" + part + ")") + "*" + v("mw", d + 1 + a, i);
+  }
+  return out;
+}
+
+} // namespace
+
+std::string node_value(int i, int n)
+{
+  std::ostringstream out;
+  out.precision(4);
+  out << static_cast<double>(i) / (n - 1);
+  return out.str();
+}
+
+std::string axis_statements(int c, int n, Interpolation scheme)
+{
+  const std::string t = v("mt", c);
+  std::string out = "  -- the weights along x[" + std::to_string(c) + "] (" + std::to_string(n) +
+                    " nodes, " + std::string(interpolation_name(scheme)) + ")\n";
+  out += "  " + t + " = x[" + std::to_string(c) + "];\n";
+  for (int i = 0; i < n; ++i)
+    out += "  " + v("mw", c, i) + " = 0;\n";
+  out += "  if " + t + " <= 0 then\n    " + v("mw", c, 0) + " = 1;\n  else\n";
+  out += "    if " + t + " >= 1 then\n      " + v("mw", c, n - 1) + " = 1;\n    else\n";
+  out += interior(c, n, scheme, 3);
+  out += "    endif;\n  endif;\n";
+  return out;
+}
+
+std::string body(const std::string& name,
+  int d,
+  const std::vector<int>& lattice,
+  Interpolation scheme,
+  const std::vector<std::string>& keys)
+{
+  std::string out = "  array mx[" + std::to_string(d) + "];\n";
+  for (int k = 1; k <= d; ++k)
+    out += "  mx[" + std::to_string(k) + "] = x[" + std::to_string(k) + "];\n";
+  for (std::size_t a = 0; a < lattice.size(); ++a)
+    out += axis_statements(d + 1 + static_cast<int>(a), lattice[a], scheme);
+  out += "  -- the keys, each called where its weight is not 0\n";
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    std::string test;
+    std::size_t rest = k;
+    for (std::size_t a = 0; a < lattice.size(); ++a)
+    {
+      const std::size_t n = static_cast<std::size_t>(lattice[a]);
+      nonzero_test(test, v("mw", d + 1 + static_cast<int>(a), static_cast<int>(rest % n)));
+      rest /= n;
+    }
+    const std::string mk = "mk" + std::to_string(k);
+    out += "  " + mk + " = 0;\n  if " + test + " then\n    " + mk + " = " + keys[k] +
+           "(mx, a);\n  endif;\n";
+  }
+  out += "  " + name + " = " + blend(static_cast<int>(lattice.size()) - 1, 0, d, lattice) + ";\n";
+  return out;
+}
+
+} // namespace frep::morph::weight_text

@@ -1,0 +1,30 @@
+// Internal: the HyperFun statements of a metamorphosis's object (morph_text.h): the keys' space
+// copied into a local array, each lattice axis's weights by the same operations as
+// lattice_weights.cpp (so the values agree to the last bit where the compiler does not
+// contract), each key called where its weight is not 0, and the blend axis by axis.
+#pragma once
+
+#include "Morph/lattice_weights.h"
+
+#include <string>
+#include <vector>
+
+namespace frep::morph::weight_text
+{
+
+/// "0", "0.25", "0.3333": node i of an axis of n, for comments.
+std::string node_value(int i, int n);
+
+/// The statements that set mw<c>_0 .. mw<c>_<n-1>, the weights of the axis whose parameter is
+/// x[c], indented by two spaces.
+std::string axis_statements(int c, int n, Interpolation scheme);
+
+/// The object's body between its braces: the local copy of x[1..d], every axis's weights, the
+/// keys' calls (lattice order) and the final `name = blend;`.
+std::string body(const std::string& name,
+  int d,
+  const std::vector<int>& lattice,
+  Interpolation scheme,
+  const std::vector<std::string>& keys);
+
+} // namespace frep::morph::weight_text

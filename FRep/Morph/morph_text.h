@@ -1,0 +1,75 @@
+// A metamorphosis written as a HyperFun model (issue 29): key objects of d coordinates placed on
+// a lattice of k parameters (Morph/lattice_weights.h) become one object of d + k coordinates,
+// x[d+1..d+k] the parameters, each over [0, 1]:
+//
+//   F(x, t) = sum over the lattice's nodes of  w(t) * F_key(x)
+//
+// evaluated axis by axis (the first parameter's keys blended first, then those blends along the
+// second, ...), so that a linear 2 x 2 lattice is the paper's formula operation for operation:
+// Meta5D = (Cat*(1-x4) + Robot*x4)*(1-x5) + (NiHon*(1-x4) + Rob_let*x4)*x5, bit for bit.
+//
+// The result is HyperFun text, so it is an object everywhere an object is: load_model compiles
+// it (the weights' if-chains become selects, folded away when the parameters are fixed: a
+// spreadsheet cell's tape holds only the keys whose weights are not 0; a key whose weight is 0
+// is not called, so it adds exactly 0), and the original interpreter reads the pasted form.
+// Two forms:
+//   Library  the text calls the keys' objects from their own files: load it with those files as
+//            HyperFun libraries (MorphText::libraries; frepkit --library).
+//   Pasted   the key files' objects are copied in, from each file's first object to its end:
+//            one file, as the original interpreter needs (Examples/homotopic/meta5d.hf).
+#pragma once
+
+#include "Compiler/load_model.h"
+#include "Language/diagnostic.h"
+#include "Morph/lattice_weights.h"
+
+#include <string>
+#include <vector>
+
+namespace frep::morph
+{
+
+struct Key
+{
+  std::string file;   ///< a HyperFun model file
+  std::string object; ///< its object (any case); empty: the file's default (my_model, else the first)
+};
+
+struct MorphSpec
+{
+  /// In lattice order, the first parameter axis fastest: key i_0 + n_0 (i_1 + n_1 (...)). The
+  /// same key may stand at several nodes. Every key has the same x[] and a[] sizes and s[1].
+  std::vector<Key> keys;
+  /// Nodes per parameter axis (each >= 2); their product is the number of keys.
+  std::vector<int> lattice;
+  Interpolation scheme = Interpolation::Linear;
+  /// The object written (a HyperFun name: a letter, then letters, digits, _). Unless it is
+  /// my_model, a my_model equal to it follows, so it is the file's default object.
+  std::string name = "morph";
+};
+
+enum class KeyPlacement
+{
+  Library,
+  Pasted
+};
+
+struct MorphText
+{
+  std::string text; ///< empty when diagnostics say why
+  /// Library placement: the key files, in first-use order, for LoadOptions::libraries.
+  std::vector<std::string> libraries;
+  int x_dim = 0; ///< of the object written: the keys' plus the lattice's axes
+  std::vector<Diagnostic> diagnostics;
+  bool ok() const { return diagnostics.empty(); }
+};
+
+/// Writes the metamorphosis. The keys are read with `key_options` (their functions and
+/// libraries; its object is ignored). Never throws for bad input: a key that does not load, keys
+/// of different sizes, a lattice that does not match the keys, clashing object names or a bad
+/// name come back as diagnostics (file:line:col where there is a place).
+MorphText write_morph(const MorphSpec& spec,
+  KeyPlacement placement,
+  const LoadOptions& key_options = {});
+
+} // namespace frep::morph

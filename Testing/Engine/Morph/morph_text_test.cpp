@@ -1,0 +1,232 @@
+// A metamorphosis written as HyperFun (Morph/morph_text.h): the paper's Meta5D from its four key
+// files, value for value (linear 2 x 2 is the paper's formula); the weights a compiled morph
+// evaluates are lattice_weights' for every scheme, its corners the corner keys exactly; the
+// pasted form loads without the key files; a fixed cell's tape keeps only the keys it uses; bad
+// lattices, keys and names are diagnostics.
+#include "Morph/morph_text.h"
+
+#include "Compiler/load_model.h"
+#include "Eval/point_evaluator.h"
+#include "Morph/lattice_weights.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+namespace fs = std::filesystem;
+using frep::morph::Interpolation;
+using frep::morph::KeyPlacement;
+using frep::morph::MorphSpec;
+
+const std::string kHomotopic = std::string(FREPKIT_SOURCE_DIR) + "/Examples/homotopic/";
+
+// A scratch folder of key files, removed at the end.
+struct KeyFolder
+{
+  fs::path dir = fs::temp_directory_path() /
+                 ("frep_morph_test_" + std::to_string(std::random_device{}()));
+  KeyFolder() { fs::create_directories(dir); }
+  ~KeyFolder() { fs::remove_all(dir); }
+  std::string write(const std::string& name, const std::string& text) const
+  {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  }
+};
+
+std::shared_ptr<const frep::Model> load(const frep::morph::MorphText& morph,
+  const std::string& object = "")
+{
+  EXPECT_TRUE(morph.ok()) << frep::format_diagnostics(morph.diagnostics);
+  frep::LoadOptions options;
+  options.libraries = morph.libraries;
+  options.object = object;
+  const frep::LoadedModel loaded =
+    frep::load_model(frep::ModelSource::from_text(morph.text, "morph.hf"), options);
+  EXPECT_TRUE(loaded.ok()) << loaded.message() << "\n" << morph.text;
+  return loaded.model;
+}
+
+double value(const frep::Model& model, const std::vector<double>& x)
+{
+  frep::PointEvaluator point(model.tape());
+  double out = 0.0;
+  EXPECT_EQ(point.evaluate(x, std::span<double>(&out, 1)), 0);
+  return out;
+}
+
+// Keys whose values are constants c_k = k + 1 in x[1..2]: the morph's value is sum w_k c_k.
+MorphSpec constant_keys(const KeyFolder& folder, const std::vector<int>& lattice, Interpolation s)
+{
+  MorphSpec spec;
+  spec.lattice = lattice;
+  spec.scheme = s;
+  std::size_t count = 1;
+  for (const int n : lattice)
+    count *= static_cast<std::size_t>(n);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::string name = "key" + std::to_string(k);
+    spec.keys.push_back({ folder.write(name + ".hf", name + "(x[2], a[1]) { " + name + " = " +
+                                                       std::to_string(k + 1) + "; }\n"),
+      "" });
+  }
+  return spec;
+}
+
+} // namespace
+
+TEST(MorphText, LinearTwoByTwoIsThePapersMeta5DBitForBit)
+{
+  MorphSpec spec;
+  for (const char* key : { "cat", "robot", "nihon", "roblet" })
+    spec.keys.push_back({ kHomotopic + key + ".hf", "" });
+  spec.lattice = { 2, 2 };
+  spec.name = "meta";
+  frep::LoadOptions meta5d;
+  meta5d.object = "meta5d";
+  const frep::LoadedModel paper =
+    frep::load_model(frep::ModelSource::file(kHomotopic + "meta5d.hf"), meta5d);
+  ASSERT_TRUE(paper.ok()) << paper.message();
+  for (const KeyPlacement placement : { KeyPlacement::Library, KeyPlacement::Pasted })
+  {
+    const frep::morph::MorphText morph = frep::morph::write_morph(spec, placement);
+    EXPECT_EQ(morph.x_dim, 5);
+    EXPECT_EQ(morph.libraries.size(), placement == KeyPlacement::Library ? 4u : 0u);
+    const auto model = load(morph); // my_model, which calls meta
+    ASSERT_TRUE(model);
+    frep::PointEvaluator ours(model->tape()), theirs(paper.model->tape());
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> space(-10, 10), time(0, 1);
+    for (int i = 0; i < 3000; ++i)
+    {
+      std::vector<double> x{ space(random), space(random), space(random), time(random), time(random) };
+      if (i < 16) // the corners and edges of the lattice, where weights are exactly 0 and 1
+      {
+        x[3] = (i & 1) ? 1.0 : (i & 4) ? 0.5 : 0.0;
+        x[4] = (i & 2) ? 1.0 : (i & 8) ? 0.5 : 0.0;
+      }
+      double a = 0.0, b = 0.0;
+      ASSERT_EQ(ours.evaluate(x, std::span<double>(&a, 1)), 0);
+      ASSERT_EQ(theirs.evaluate(x, std::span<double>(&b, 1)), 0);
+      ASSERT_EQ(a, b) << "at x4 = " << x[3] << ", x5 = " << x[4];
+    }
+  }
+}
+
+TEST(MorphText, WeightsAreLatticeWeightsAndCornersTheKeys)
+{
+  const KeyFolder folder;
+  for (const Interpolation scheme :
+    { Interpolation::Linear, Interpolation::CatmullRom, Interpolation::BSpline })
+  {
+    for (const std::vector<int>& lattice : { std::vector<int>{ 5 }, std::vector<int>{ 3, 4 } })
+    {
+      const MorphSpec spec = constant_keys(folder, lattice, scheme);
+      const auto model = load(frep::morph::write_morph(spec, KeyPlacement::Library));
+      ASSERT_TRUE(model);
+      for (int i = 0; i <= 40; ++i)
+      {
+        std::vector<double> t{ i / 40.0 };
+        if (lattice.size() == 2)
+          t.push_back(std::fmod(i * 0.37, 1.0));
+        const std::vector<double> w = frep::morph::lattice_weights(scheme, lattice, t);
+        double expected = 0.0;
+        for (std::size_t k = 0; k < w.size(); ++k)
+          expected += w[k] * static_cast<double>(k + 1);
+        std::vector<double> x{ 0.5, -0.5 };
+        x.insert(x.end(), t.begin(), t.end());
+        EXPECT_NEAR(value(*model, x), expected, 1e-13)
+          << frep::morph::interpolation_name(scheme) << " t = " << t[0];
+      }
+      // The corners: exactly the corner key (x outside [0, 1] is clamped).
+      const double last = static_cast<double>(spec.keys.size());
+      std::vector<double> low{ 0, 0 }, high{ 0, 0 };
+      for (std::size_t a = 0; a < lattice.size(); ++a)
+      {
+        low.push_back(-0.5);
+        high.push_back(1.5);
+      }
+      EXPECT_EQ(value(*model, low), 1.0);
+      EXPECT_EQ(value(*model, high), last);
+    }
+  }
+}
+
+TEST(MorphText, PastedLoadsAloneAndAFixedCellKeepsOnlyItsKeys)
+{
+  const KeyFolder folder;
+  MorphSpec spec = constant_keys(folder, { 5 }, Interpolation::Linear);
+  // Keys that depend on x, so the tape has work per key.
+  for (std::size_t k = 0; k < spec.keys.size(); ++k)
+  {
+    const std::string name = "key" + std::to_string(k);
+    spec.keys[k].file = folder.write(name + ".hf", name + "(x[2], a[1]) { " + name + " = " +
+                                                     std::to_string(k + 1) +
+                                                     " - x[1]*x[1] - x[2]*x[2]; }\n");
+  }
+  const frep::morph::MorphText pasted = frep::morph::write_morph(spec, KeyPlacement::Pasted);
+  ASSERT_TRUE(pasted.ok());
+  EXPECT_TRUE(pasted.libraries.empty());
+  const frep::LoadedModel alone =
+    frep::load_model(frep::ModelSource::from_text(pasted.text, "pasted.hf"));
+  ASSERT_TRUE(alone.ok()) << alone.message();
+  EXPECT_NEAR(value(*alone.model, { 0.5, 0.5, 0.25 + 0.125 }), 2.5 - 0.5, 1e-15);
+  frep::Specialisation cell;
+  cell.fixed = { std::nullopt, std::nullopt, 0.3 }; // between keys 1 and 2 (nodes 0.25, 0.5)
+  const auto full = alone.model->tape();
+  const auto fixed = alone.model->specialise(cell);
+  EXPECT_LT(fixed->code.size() * 2, full->code.size())
+    << "the cell's tape has " << fixed->code.size() << " instructions, the whole "
+    << full->code.size();
+}
+
+TEST(MorphText, BadRequestsAreDiagnostics)
+{
+  const KeyFolder folder;
+  const std::string ball = folder.write("ball.hf", "ball(x[3], a[1]) { ball = 1 - x[1]^2; }\n");
+  const std::string disc = folder.write("disc.hf", "disc(x[2], a[1]) { disc = 1 - x[1]^2; }\n");
+  const std::string twice = folder.write("twice.hf", "ball(x[3], a[1]) { ball = 2; }\n");
+  const std::string coloured =
+    folder.write("colour.hf", "colour(x[3], a[1], s[3]) { s[1] = 1; colour = 1; }\n");
+  const auto message = [](const MorphSpec& spec)
+  {
+    const frep::morph::MorphText m = frep::morph::write_morph(spec, KeyPlacement::Library);
+    EXPECT_FALSE(m.ok());
+    EXPECT_TRUE(m.text.empty());
+    return frep::format_diagnostics(m.diagnostics);
+  };
+  MorphSpec spec;
+  spec.keys = { { ball, "" }, { ball, "" }, { ball, "" } };
+  spec.lattice = { 2, 2 };
+  EXPECT_NE(message(spec).find("the lattice 2 x 2 has 4 nodes, 3 keys were given"), std::string::npos);
+  spec.lattice = { 3, 1 };
+  EXPECT_NE(message(spec).find("2 to 64 nodes"), std::string::npos);
+  spec.keys = { { ball, "" }, { disc, "" } };
+  spec.lattice = { 2 };
+  EXPECT_NE(message(spec).find("disc.hf:1:1: error: the key disc(x[2], a[1]) and the key "
+                               "ball(x[3], a[1])"),
+    std::string::npos)
+    << message(spec);
+  spec.keys = { { ball, "" }, { twice, "" } };
+  EXPECT_NE(message(spec).find("the object 'ball' is defined in"), std::string::npos);
+  spec.keys = { { ball, "" }, { coloured, "" } };
+  EXPECT_NE(message(spec).find("has s[3]"), std::string::npos);
+  spec.keys = { { ball, "" }, { ball, "cube" } };
+  EXPECT_NE(message(spec).find("cube"), std::string::npos);
+  spec.keys = { { ball, "" }, { (folder.dir / "missing.hf").string(), "" } };
+  EXPECT_NE(message(spec).find("missing.hf"), std::string::npos);
+  spec.keys = { { ball, "" }, { ball, "" } };
+  spec.name = "2ball";
+  EXPECT_NE(message(spec).find("not a HyperFun object name"), std::string::npos);
+  spec.name = "ball";
+  EXPECT_NE(message(spec).find("an object the metamorphosis writes"), std::string::npos);
+}

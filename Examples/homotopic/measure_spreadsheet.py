@@ -7,13 +7,19 @@ meta5d.hf with the frepkit command-line tool, nothing else:
   keys      of each key shape's own inside samples (Cat, Robot, NiHon, Rob_let, evaluated as the
             objects cat, robot, nihon, roblet of the same file), the percentage also inside the
             cell: how much of each key shape the cell shows;
+  overlap   with each key shape, intersection over union of the inside samples (issue 29's
+            measure), and the issue's goals: a cell halfway between two keys overlaps both
+            within 0.15 of each other, the middle cell overlaps all four within 0.15;
   mesh      the cell meshed as the spreadsheet meshes it (frepkit mesh --axes X,Y,Z,x4,x5 at
             --mesh-grid samples per axis): triangles, connected components, and the largest
             component's share of the enclosed volume (scattered slivers: many components, a
             small largest share).
 
-  python3 measure_spreadsheet.py [--model meta5d.hf] [--frepkit build/bin/frepkit]
-                                 [--grid 64] [--mesh-grid 128] [--json FILE]
+  python3 measure_spreadsheet.py [--model meta5d.hf] [--object meta5d] [--frepkit FREPKIT]
+                                 [--grid 64] [--mesh-grid 128] [--json FILE] [-- FREPKIT_ARGS]
+
+FREPKIT_ARGS (after --) go to every frepkit eval and mesh, e.g. --library or --shape for a
+metamorphosis written by frepkit morph whose keys call meshes (Documentation/metamorphosis.md).
 
 Run from anywhere; frepkit is looked for in ../../build/bin, then on PATH.
 """
@@ -52,9 +58,12 @@ def grid_points(n):
     return [(x, y, z) for z in c for y in c for x in c]
 
 
+EXTRA = []  # FREPKIT_ARGS
+
+
 def evaluate(frepkit, model, obj, lines):
-    run = subprocess.run([frepkit, 'eval', str(model), '-o', obj], input='\n'.join(lines) + '\n',
-                         capture_output=True, text=True, check=True)
+    run = subprocess.run([frepkit, 'eval', str(model), '-o', obj] + EXTRA,
+                         input='\n'.join(lines) + '\n', capture_output=True, text=True, check=True)
     out = run.stdout.splitlines()
     if len(out) != len(lines):
         sys.exit('frepkit eval: %d results for %d points' % (len(out), len(lines)))
@@ -68,11 +77,12 @@ def evaluate(frepkit, model, obj, lines):
     return inside, errors
 
 
-def mesh_statistics(frepkit, model, x4, x5, samples, workdir):
+def mesh_statistics(frepkit, model, obj, x4, x5, samples, workdir):
     """Triangles, components and the largest component's share of the volume of one cell."""
     stl = os.path.join(workdir, 'cell.stl')
     subprocess.run([frepkit, 'mesh', str(model), '-o', stl, '--axes', 'X,Y,Z,%g,%g' % (x4, x5),
-                    '--grid', str(samples), '--no-normals', '-q'], check=True)
+                    '--object', obj,
+                    '--grid', str(samples), '--no-normals', '-q'] + EXTRA, check=True)
     data = pathlib.Path(stl).read_bytes()
     count = struct.unpack_from('<I', data, 80)[0]
     index, parent, tris = {}, [], []
@@ -114,15 +124,39 @@ def table(title, rows, fmt):
         print('  %7g ' % x5 + ''.join(fmt % v for v in row))
 
 
+def goals(cells):
+    """Issue 29's goals: halfway cells overlap their two keys within 0.15 of each other, the
+    middle cell its four keys within 0.15. Prints each figure with PASS or MISS."""
+    def cell(x4, x5):
+        return next(c for c in cells if c['x4'] == x4 and c['x5'] == x5)
+    print('\ngoals (issue 29):')
+    for x4, x5, a, b in ((0.5, 0, 'cat', 'robot'), (0, 0.5, 'cat', 'nihon'),
+                         (1, 0.5, 'robot', 'roblet'), (0.5, 1, 'nihon', 'roblet')):
+        o = cell(x4, x5)['overlap']
+        gap = abs(o[a] - o[b])
+        print('  (%g, %g) overlaps %s %.2f and %s %.2f: difference %.2f %s'
+              % (x4, x5, a, o[a], b, o[b], gap, 'PASS' if gap <= 0.15 else 'MISS (goal 0.15)'))
+    o = cell(0.5, 0.5)['overlap']
+    spread = max(o.values()) - min(o.values())
+    print('  (0.5, 0.5) overlaps %s: spread %.2f %s'
+          % (', '.join('%s %.2f' % (k, o[k]) for k, _ in KEYS), spread,
+             'PASS' if spread <= 0.15 else 'MISS (goal 0.15)'))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument('--model', default=str(HERE / 'meta5d.hf'))
+    p.add_argument('--object', default='meta5d', help='the 5-D object (default meta5d)')
     p.add_argument('--frepkit')
     p.add_argument('--grid', type=int, default=64, help='volume samples per axis (default 64)')
     p.add_argument('--mesh-grid', type=int, default=128,
                    help='mesh samples per axis, as the spreadsheet (default 128; 0: no meshes)')
     p.add_argument('--json', help='write every number to this file')
-    args = p.parse_args()
+    argv = sys.argv[1:]
+    if '--' in argv:
+        EXTRA.extend(argv[argv.index('--') + 1:])
+        argv = argv[:argv.index('--')]
+    args = p.parse_args(argv)
     frepkit = find_frepkit(args.frepkit)
     model = pathlib.Path(args.model).resolve()
 
@@ -137,19 +171,22 @@ def main():
     for x5 in STEPS:
         for x4 in STEPS:
             lines = ['%s %g %g' % (q, x4, x5) for q in xyz]
-            inside, errors = evaluate(frepkit, model, 'meta5d', lines)
+            inside, errors = evaluate(frepkit, model, args.object, lines)
             n_in = sum(inside)
             cell = {'x4': x4, 'x5': x5, 'volume_permille': 1000.0 * n_in / len(inside),
-                    'errors': errors, 'keys_percent': {}}
+                    'errors': errors, 'keys_percent': {}, 'overlap': {}}
             for obj, _ in KEYS:
                 k = keys[obj]
                 both = sum(1 for a, b in zip(inside, k) if a and b)
+                either = sum(1 for a, b in zip(inside, k) if a or b)
                 cell['keys_percent'][obj] = 100.0 * both / max(1, sum(k))
+                cell['overlap'][obj] = both / max(1, either)
             cells.append(cell)
     if args.mesh_grid > 0:
         with tempfile.TemporaryDirectory() as work:
             for cell in cells:
-                t, c, l = mesh_statistics(frepkit, model, cell['x4'], cell['x5'], args.mesh_grid, work)
+                t, c, l = mesh_statistics(frepkit, model, args.object, cell['x4'], cell['x5'],
+                                          args.mesh_grid, work)
                 cell.update(triangles=t, components=c, largest_share=l)
 
     def rows(f):
@@ -161,6 +198,9 @@ def main():
     table('inside volume, per mille of the box', rows(lambda c: c['volume_permille']), '%9.1f')
     for obj, name in KEYS:
         table('%% of %s inside the cell' % name, rows(lambda c, o=obj: c['keys_percent'][o]), '%9.0f')
+    for obj, name in KEYS:
+        table('overlap with %s (intersection over union)' % name,
+              rows(lambda c, o=obj: c['overlap'][o]), '%9.2f')
     if args.mesh_grid > 0:
         table('triangles', rows(lambda c: c['triangles']), '%9d')
         table('components', rows(lambda c: c['components']), '%9d')
@@ -175,6 +215,7 @@ def main():
           % ', '.join('%.1f' % v for v in edge))
     print('         the (0.5, 0.5) cell shows %s' % ', '.join(
         '%.0f%% of %s' % (mid['keys_percent'][o], n) for o, n in KEYS))
+    goals(cells)
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps({'model': str(model), 'grid': args.grid,
                                                        'mesh_grid': args.mesh_grid, 'cells': cells}, indent=1))

@@ -77,6 +77,11 @@ CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
     ->capture_default_str();
   morph->add_option("--name", options.name, "The object written (my_model calls it)")
     ->capture_default_str();
+  morph->add_option("--align", options.align,
+          "Align the keys as the blend proceeds: none (the paper), centroid (each key travels "
+          "with the blended centroid) or size (and is scaled to the blended size, its F alike)")
+    ->check(CLI::IsMember({ "none", "centroid", "size" }))
+    ->capture_default_str();
   morph->add_flag("--paste", options.paste,
     "Copy the keys' objects into the file (one file the original HyperFun reads); default: "
     "call them from their files, loaded with --library");
@@ -94,6 +99,9 @@ int run_morph(const MorphOptions& options)
   spec.lattice = parse_lattice(options.lattice, spec.keys.size());
   spec.scheme = *frep::morph::interpolation_from_name(options.scheme);
   spec.name = options.name;
+  spec.alignment = options.align == "centroid" ? frep::morph::Alignment::Centroid
+                   : options.align == "size"   ? frep::morph::Alignment::CentroidAndSize
+                                               : frep::morph::Alignment::None;
   const frep::morph::KeyPlacement placement =
     options.paste ? frep::morph::KeyPlacement::Pasted : frep::morph::KeyPlacement::Library;
   const frep::morph::MorphText morph =

@@ -23,6 +23,7 @@ struct MorphOptions
   std::string scheme = "linear";
   std::string name = "morph";
   bool paste = false;
+  std::string align = "none";
   std::string output;
 };
 

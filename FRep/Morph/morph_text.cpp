@@ -195,7 +195,11 @@ std::string header(const MorphSpec& spec,
   std::string out =
     comment(" Metamorphosis written by FRepKit (frepkit morph): " + std::to_string(keys.size()) +
             " keys on a " + lattice_text(spec.lattice) + " lattice, " +
-            std::string(interpolation_name(spec.scheme)) + " weights.") +
+            std::string(interpolation_name(spec.scheme)) + " weights" +
+            (spec.alignment == Alignment::None ? std::string()
+             : spec.alignment == Alignment::Centroid ? ", keys aligned by their centroids"
+                                                     : ", keys aligned by their centroids and sizes") +
+            ".") +
     comment(" x[1.." + std::to_string(d) + "]: the keys' coordinates; x[" + std::to_string(d + 1) +
             "]" + (axes > 1 ? "..x[" + std::to_string(d + static_cast<int>(axes)) + "]" : "") +
             ": the lattice's parameters, each over [0, 1] (clamped); node i of n at i/(n-1).") +
@@ -257,6 +261,33 @@ std::string pasted_keys(const std::vector<KeyFile>& files, std::vector<Diagnosti
   return out;
 }
 
+// Each key's frame (centroid, size), measured once per distinct key object.
+bool measure_frames(const MorphSpec& spec,
+  const LoadOptions& key_options,
+  std::vector<KeyFrame>& frames,
+  std::vector<Diagnostic>& diagnostics)
+{
+  std::map<std::pair<std::string, std::string>, KeyFrame> measured;
+  for (const Key& key : spec.keys)
+  {
+    const auto id = std::make_pair(key.file, lower(key.object));
+    auto found = measured.find(id);
+    if (found == measured.end())
+    {
+      LoadOptions options = key_options;
+      options.object = key.object;
+      const LoadedModel loaded = load_model(ModelSource::file(key.file), options);
+      KeyFrame frame = loaded.ok() ? measure_key_frame(loaded.model->tape(), spec.frame_samples)
+                                   : KeyFrame{ {}, 0.0, 0, loaded.message() };
+      if (!frame.ok())
+        diagnostics.push_back(error(key.file, {}, "the key's centroid and size: " + frame.error));
+      found = measured.emplace(id, std::move(frame)).first;
+    }
+    frames.push_back(found->second);
+  }
+  return diagnostics.empty();
+}
+
 } // namespace
 
 MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadOptions& key_options)
@@ -268,6 +299,10 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
   std::vector<KeyFile> files;
   if (!read_keys(spec, key_options, keys, files, result.diagnostics) ||
       !check_keys(spec, keys, files, result.diagnostics))
+    return result;
+  std::vector<KeyFrame> frames;
+  if (spec.alignment != Alignment::None &&
+      !measure_frames(spec, key_options, frames, result.diagnostics))
     return result;
   const int d = keys.front().x_dim;
   const int a_dim = keys.front().a_dim;
@@ -291,7 +326,8 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
   const std::string name = lower(spec.name);
   const std::string head = "(x[" + std::to_string(result.x_dim) + "], a[" + std::to_string(a_dim) + "])";
   text += "-- the metamorphosis\n" + name + head + "\n{\n" +
-          weight_text::body(name, d, spec.lattice, spec.scheme, key_names) + "}\n";
+          weight_text::body(name, d, spec.lattice, spec.scheme, key_names, spec.alignment, frames) +
+          "}\n";
   if (name != "my_model")
   {
     text += "\n-- the default object (hfp and frepkit evaluate my_model when no object is named)\n"

@@ -21,6 +21,7 @@
 
 #include "Compiler/load_model.h"
 #include "Language/diagnostic.h"
+#include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
 
 #include <string>
@@ -43,6 +44,11 @@ struct MorphSpec
   /// Nodes per parameter axis (each >= 2); their product is the number of keys.
   std::vector<int> lattice;
   Interpolation scheme = Interpolation::Linear;
+  /// Keys aligned as the blend proceeds (key_frame.h): each key evaluated where it would be had
+  /// its centroid (and size) travelled to the weights' blend of the keys' centroids (and sizes),
+  /// measured on `frame_samples`^d points of each key. The corners stay the keys exactly.
+  Alignment alignment = Alignment::None;
+  int frame_samples = 48;
   /// The object written (a HyperFun name: a letter, then letters, digits, _). Unless it is
   /// my_model, a my_model equal to it follows, so it is the file's default object.
   std::string name = "morph";

@@ -2,7 +2,7 @@
 # frepkit morph end to end: the four key shapes of Homotopic Fun on a 2 x 2 lattice are the
 # paper's Meta5D value for value (eval against Examples/homotopic/meta5d.hf), in the library form
 # (--library the keys) and the pasted one (one file, no library); a mid cell meshes closed; the
-# spline schemes write loadable models; a bad lattice, a missing key or a clash of names is exit
+# spline schemes write loadable models; aligned keys keep exact corners; a bad lattice, a missing key or a clash of names is exit
 # code 1 with the reason, leaving the output file as it was and no temporary behind.
 #   frepkit_morph_test.sh FREPKIT SOURCE_DIR MESH_CHECK
 set -u
@@ -41,6 +41,19 @@ if run "morph 2x2 --paste" 0 "$frepkit" morph "${keys[@]}" --lattice 2x2 --paste
     -o "$work/mid.stl"; then
     run "the middle cell is closed" 0 "$check" "$work/mid.stl" --closed
   fi
+fi
+# Aligned keys (centroids and sizes): the corners are still the keys exactly.
+awk 'BEGIN { srand(11); for (i = 0; i < 40; i++)
+  printf "%.6f %.6f %.6f %d %d\n", 20*rand()-10, 20*rand()-10, 20*rand()-10, i % 2, int(i / 2) % 2 }' \
+  > "$work/corners.txt"
+run "paper's corners" 0 "$frepkit" eval meta5d.hf --object meta5d -p "$work/corners.txt"
+corners=$out
+if run "morph --align size" 0 "$frepkit" morph "${keys[@]}" --lattice 2x2 --align size --paste \
+  -o "$work/aligned.hf"; then
+  run "eval the aligned morph" 0 "$frepkit" eval "$work/aligned.hf" -p "$work/corners.txt"
+  [ "$out" == "$corners" ] && pass "aligned corners = the keys at 40 points" ||
+    fail "aligned corners differ: $(diff <(echo "$out") <(echo "$corners") | head -4)"
+  expect_in "the frame is written" "$(cat "$work/aligned.hf")" "the moving frame"
 fi
 for scheme in catmull-rom b-spline; do
   if run "morph 5 keys, $scheme" 0 "$frepkit" morph cat.hf robot.hf nihon.hf roblet.hf cat.hf:cat \

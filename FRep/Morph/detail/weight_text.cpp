@@ -1,6 +1,9 @@
 #include "Morph/detail/weight_text.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -143,6 +146,75 @@ std::string blend(int a, std::size_t offset, int d, const std::vector<int>& latt
   return out;
 }
 
+// A number as a HyperFun literal: fixed notation (an exponent like e-05 is a syntax error, and
+// the literal is read as digits over powers of 10 anyway: these are measurements, not exact).
+std::string literal(double value)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", std::fabs(value));
+  return value < 0 ? std::string("(-") + text + ")" : std::string(text);
+}
+
+// The lattice weight of key k: the product of its nodes' weights.
+std::string key_weight(std::size_t k, int d, const std::vector<int>& lattice)
+{
+  std::string product;
+  std::size_t rest = k;
+  for (std::size_t a = 0; a < lattice.size(); ++a)
+  {
+    const std::size_t n = static_cast<std::size_t>(lattice[a]);
+    product += (product.empty() ? "" : "*") +
+               v("mw", d + 1 + static_cast<int>(a), static_cast<int>(rest % n));
+    rest /= n;
+  }
+  return product;
+}
+
+// The moving frame (the keys' centroids, and sizes, blended with their weights) and each key's
+// point my<k>[1..d]: where the key would be had it travelled (and grown) into the frame; at a
+// corner (weight 1) x itself, so the corners stay the keys exactly.
+std::string frame_statements(int d,
+  const std::vector<int>& lattice,
+  Alignment alignment,
+  const std::vector<KeyFrame>& frames)
+{
+  std::string out = "  -- the moving frame: the keys' centroids" +
+                    std::string(alignment == Alignment::CentroidAndSize ? " and sizes" : "") +
+                    ", blended with their weights\n";
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    out += "  mW" + std::to_string(k) + " = " + key_weight(k, d, lattice) + ";\n";
+  const auto blended = [&](const std::function<double(const KeyFrame&)>& of)
+  {
+    std::string sum;
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      sum += (k ? " + " : "") + std::string("mW") + std::to_string(k) + "*" + literal(of(frames[k]));
+    return sum;
+  };
+  for (int i = 0; i < d; ++i)
+    out += "  mc" + std::to_string(i + 1) + " = " +
+           blended([i](const KeyFrame& f) { return f.centroid[static_cast<std::size_t>(i)]; }) + ";\n";
+  if (alignment == Alignment::CentroidAndSize)
+    out += "  msz = " + blended([](const KeyFrame& f) { return f.size; }) + ";\n";
+  for (std::size_t k = 0; k < frames.size(); ++k)
+  {
+    const std::string my = "my" + std::to_string(k), W = "mW" + std::to_string(k);
+    out += "  if " + W + " >= 1 then\n";
+    for (int i = 1; i <= d; ++i)
+      out += "    " + my + "[" + std::to_string(i) + "] = x[" + std::to_string(i) + "];\n";
+    out += "  else\n";
+    for (int i = 1; i <= d; ++i)
+    {
+      const std::string c = literal(frames[k].centroid[static_cast<std::size_t>(i - 1)]);
+      out += "    " + my + "[" + std::to_string(i) + "] = " + c + " + (x[" + std::to_string(i) +
+             "] - mc" + std::to_string(i) + ")" +
+             (alignment == Alignment::CentroidAndSize ? "*(" + literal(frames[k].size) + "/msz)" : "") +
+             ";\n";
+    }
+    out += "  endif;\n";
+  }
+  return out;
+}
+
 } // namespace
 
 std::string node_value(int i, int n)
@@ -172,13 +244,21 @@ std::string body(const std::string& name,
   int d,
   const std::vector<int>& lattice,
   Interpolation scheme,
-  const std::vector<std::string>& keys)
+  const std::vector<std::string>& keys,
+  Alignment alignment,
+  const std::vector<KeyFrame>& frames)
 {
-  std::string out = "  array mx[" + std::to_string(d) + "];\n";
+  const bool aligned = alignment != Alignment::None && frames.size() == keys.size();
+  std::string out = "  array mx[" + std::to_string(d) + "]";
+  for (std::size_t k = 0; aligned && k < keys.size(); ++k)
+    out += ", my" + std::to_string(k) + "[" + std::to_string(d) + "]";
+  out += ";\n";
   for (int k = 1; k <= d; ++k)
     out += "  mx[" + std::to_string(k) + "] = x[" + std::to_string(k) + "];\n";
   for (std::size_t a = 0; a < lattice.size(); ++a)
     out += axis_statements(d + 1 + static_cast<int>(a), lattice[a], scheme);
+  if (aligned)
+    out += frame_statements(d, lattice, alignment, frames);
   out += "  -- the keys, each called where its weight is not 0\n";
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
@@ -191,8 +271,12 @@ std::string body(const std::string& name,
       rest /= n;
     }
     const std::string mk = "mk" + std::to_string(k);
-    out += "  " + mk + " = 0;\n  if " + test + " then\n    " + mk + " = " + keys[k] +
-           "(mx, a);\n  endif;\n";
+    const std::string point = aligned ? "my" + std::to_string(k) : std::string("mx");
+    const std::string scale = aligned && alignment == Alignment::CentroidAndSize
+                                ? "*(msz/" + literal(frames[k].size) + ")"
+                                : std::string();
+    out += "  " + mk + " = 0;\n  if " + test + " then\n    " + mk + " = " + keys[k] + "(" + point +
+           ", a)" + scale + ";\n  endif;\n";
   }
   out += "  " + name + " = " + blend(static_cast<int>(lattice.size()) - 1, 0, d, lattice) + ";\n";
   return out;

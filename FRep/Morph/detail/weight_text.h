@@ -4,6 +4,7 @@
 // contract), each key called where its weight is not 0, and the blend axis by axis.
 #pragma once
 
+#include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
 
 #include <string>
@@ -19,12 +20,15 @@ std::string node_value(int i, int n);
 /// x[c], indented by two spaces.
 std::string axis_statements(int c, int n, Interpolation scheme);
 
-/// The object's body between its braces: the local copy of x[1..d], every axis's weights, the
-/// keys' calls (lattice order) and the final `name = blend;`.
+/// The object's body between its braces: the local copy of x[1..d], every axis's weights, with
+/// an alignment the moving frame and each key's point in it (`frames`: one per key, measured),
+/// the keys' calls (lattice order) and the final `name = blend;`.
 std::string body(const std::string& name,
   int d,
   const std::vector<int>& lattice,
   Interpolation scheme,
-  const std::vector<std::string>& keys);
+  const std::vector<std::string>& keys,
+  Alignment alignment = Alignment::None,
+  const std::vector<KeyFrame>& frames = {});
 
 } // namespace frep::morph::weight_text

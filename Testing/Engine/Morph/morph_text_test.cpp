@@ -7,6 +7,7 @@
 
 #include "Compiler/load_model.h"
 #include "Eval/point_evaluator.h"
+#include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
 
 #include <gtest/gtest.h>
@@ -229,4 +230,66 @@ TEST(MorphText, BadRequestsAreDiagnostics)
   EXPECT_NE(message(spec).find("not a HyperFun object name"), std::string::npos);
   spec.name = "ball";
   EXPECT_NE(message(spec).find("an object the metamorphosis writes"), std::string::npos);
+}
+
+// Aligned by centroids and sizes, two balls of radii 1 and 2 centred at x = -3 and 3 blend into
+// a ball of the blended radius at the blended centre (F scales with the size, so each key's
+// zero set travels and grows into the same sphere); the ends stay the keys bit for bit.
+TEST(MorphText, AlignedBallsTravelAndGrowIntoOneBall)
+{
+  const KeyFolder folder;
+  MorphSpec spec;
+  spec.keys = { { folder.write("small.hf",
+                    "small(x[3], a[1]) { small = 1 - (x[1] + 3)^2 - x[2]^2 - x[3]^2; }\n"),
+                  "" },
+    { folder.write("large.hf", "large(x[3], a[1]) { large = 4 - (x[1] - 3)^2 - x[2]^2 - x[3]^2; }\n"),
+      "" } };
+  spec.lattice = { 2 };
+  spec.alignment = frep::morph::Alignment::CentroidAndSize;
+  const frep::morph::MorphText morph = frep::morph::write_morph(spec, KeyPlacement::Pasted);
+  const auto model = load(morph);
+  ASSERT_TRUE(model);
+  const auto small = frep::load_model(frep::ModelSource::file(spec.keys[0].file)).model;
+  const auto large = frep::load_model(frep::ModelSource::file(spec.keys[1].file)).model;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> space(-6, 6);
+  for (int i = 0; i < 200; ++i)
+  {
+    const double x = space(random), y = space(random), z = space(random);
+    EXPECT_EQ(value(*model, { x, y, z, 0.0 }), value(*small, { x, y, z }));
+    EXPECT_EQ(value(*model, { x, y, z, 1.0 }), value(*large, { x, y, z }));
+  }
+  // Halfway: a ball of radius 1.5 about x = 0 (the measured centroids and sizes are within a
+  // grid step of the true ones).
+  for (const double r : { 1.35, -1.35 })
+  {
+    EXPECT_GT(value(*model, { r, 0, 0, 0.5 }), 0.0) << r;
+    EXPECT_GT(value(*model, { 0, r, 0, 0.5 }), 0.0) << r;
+  }
+  for (const double r : { 1.65, -1.65 })
+  {
+    EXPECT_LT(value(*model, { r, 0, 0, 0.5 }), 0.0) << r;
+    EXPECT_LT(value(*model, { 0, 0, r, 0.5 }), 0.0) << r;
+  }
+  // Unaligned, the same two balls halfway are nothing near the origin.
+  spec.alignment = frep::morph::Alignment::None;
+  const auto in_place = load(frep::morph::write_morph(spec, KeyPlacement::Pasted));
+  ASSERT_TRUE(in_place);
+  EXPECT_LT(value(*in_place, { 0, 0, 0, 0.5 }), 0.0);
+}
+
+TEST(MorphText, KeyFrameIsTheSolidsCentroidAndSize)
+{
+  const auto ball = frep::load_model(frep::ModelSource::from_text(
+    "b(x[3], a[1]) { b = 4 - (x[1] - 1)^2 - (x[2] + 2)^2 - x[3]^2; }")).model;
+  const frep::morph::KeyFrame frame = frep::morph::measure_key_frame(ball->tape(), 64);
+  ASSERT_TRUE(frame.ok()) << frame.error;
+  EXPECT_NEAR(frame.centroid[0], 1.0, 0.01);
+  EXPECT_NEAR(frame.centroid[1], -2.0, 0.01);
+  EXPECT_NEAR(frame.centroid[2], 0.0, 0.01);
+  EXPECT_NEAR(frame.size, std::cbrt(4.0 / 3.0 * M_PI * 8.0), 0.05); // volume^(1/3) of radius 2
+  const auto half_space =
+    frep::load_model(frep::ModelSource::from_text("h(x[3], a[1]) { h = x[1]; }")).model;
+  EXPECT_NE(frep::morph::measure_key_frame(half_space->tape()).error.find("not bounded"),
+    std::string::npos);
 }

@@ -277,42 +277,69 @@ void vtkHyperFunSource::FillObject(const std::shared_ptr<const frep::Model>& mod
 }
 
 //------------------------------------------------------------------------------
-std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
+bool vtkHyperFunSource::ReadProgramText(std::string& text, std::string& sourceName)
 {
-  std::string text;
-  std::string sourceName;
   if (this->FileName && *this->FileName)
   {
     std::ifstream in(this->FileName, std::ios::binary);
     if (!in)
     {
-      this->CachedModel.reset();
-      this->CachedProgram.reset();
       vtkErrorMacro(<< this->FileName << ": cannot open the file");
-      return nullptr;
+      return false;
     }
     std::ostringstream buffer;
     buffer << in.rdbuf();
     if (in.bad())
     {
-      this->CachedModel.reset();
-      this->CachedProgram.reset();
       vtkErrorMacro(<< this->FileName << ": cannot read the file");
-      return nullptr;
+      return false;
     }
     text = buffer.str();
     sourceName = this->FileName;
+    return true;
   }
-  else if (this->ModelText)
+  if (this->ModelText)
   {
     text = this->ModelText;
     sourceName = "<string>";
+    return true;
   }
-  else
+  vtkErrorMacro(<< "neither FileName nor ModelText is set");
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHyperFunSource::AddUserFunctions(frep::LoadOptions& options)
+{
+  options.libraries = this->UserLibraries;
+  if (this->ShapeNames.empty())
+  {
+    return true;
+  }
+  auto shapes = std::make_shared<frep::UserFunctionRegistry>();
+  for (std::size_t i = 0; i < this->ShapeNames.size(); ++i)
+  {
+    const std::string e =
+      shapes->add(frep::shapes::tape_function(this->ShapeNames[i], this->ShapeTapes[i]));
+    if (!e.empty())
+    {
+      vtkErrorMacro(<< "AddShape: " << e);
+      return false;
+    }
+  }
+  options.functions = shapes;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
+{
+  std::string text;
+  std::string sourceName;
+  if (!this->ReadProgramText(text, sourceName))
   {
     this->CachedModel.reset();
     this->CachedProgram.reset();
-    vtkErrorMacro(<< "neither FileName nor ModelText is set");
     return nullptr;
   }
   const std::string objectName = this->ObjectName ? this->ObjectName : "";
@@ -329,21 +356,9 @@ std::shared_ptr<const frep::Model> vtkHyperFunSource::BuildModel()
   // extension, HyperFun library files and shared libraries, the same messages as frepkit's.
   frep::LoadOptions options;
   options.object = objectName;
-  options.libraries = this->UserLibraries;
-  if (!this->ShapeNames.empty())
+  if (!this->AddUserFunctions(options))
   {
-    auto shapes = std::make_shared<frep::UserFunctionRegistry>();
-    for (std::size_t i = 0; i < this->ShapeNames.size(); ++i)
-    {
-      const std::string e =
-        shapes->add(frep::shapes::tape_function(this->ShapeNames[i], this->ShapeTapes[i]));
-      if (!e.empty())
-      {
-        vtkErrorMacro(<< "AddShape: " << e);
-        return nullptr;
-      }
-    }
-    options.functions = shapes;
+    return nullptr;
   }
   frep::LoadedModel loaded =
     frep::load_model(frep::ModelSource::from_text(text, sourceName), options);

@@ -53,6 +53,7 @@
 namespace frep
 {
 class Model;
+struct LoadOptions;
 struct Tape;
 namespace ast
 {
@@ -191,6 +192,19 @@ protected:
   std::vector<std::string> UserLibraries;
   std::vector<std::string> ShapeNames;
   std::vector<std::shared_ptr<const frep::Tape>> ShapeTapes;
+
+  /**
+   * The program's text and the name its diagnostics give (FileName's contents, or ModelText as
+   * "<string>"); false after reporting why there is none. Subclasses that write their program
+   * (vtkFRepMetamorphosis) override it.
+   */
+  virtual bool ReadProgramText(std::string& text, std::string& sourceName);
+
+  /**
+   * Puts the user libraries (AddUserLibrary) and shapes (AddShape) into `options`; false after
+   * reporting a shape that cannot be registered.
+   */
+  bool AddUserFunctions(frep::LoadOptions& options);
 
 private:
   vtkHyperFunSource(const vtkHyperFunSource&) = delete;

@@ -251,6 +251,33 @@ src.UpdatePipeline()
 t.check(src.GetDataInformation(1).GetNumberOfCells() > 0, "helper (everything inside): caps")
 t.near(bounds(src, 1)[1], 10.0, 1e-6, "helper fills the box")
 
+# --- FRep Metamorphosis: the Homotopic Fun keys on 2 x 2, sliced --------------------------------
+homotopic = os.path.join(examples, "homotopic")
+keys = []
+for k in ("cat", "robot", "nihon", "roblet"):
+    keys += [os.path.join(homotopic, k + ".hf"), ""]  # (file, object): the file's default
+meta = FRepMetamorphosis(Keys=keys, Lattice=[2, 2])
+meta.UpdatePipeline()
+t.check(field_range(meta, "FRepDimension") == (5.0, 5.0), "FRep Metamorphosis: 5-D")
+mslice = FRepSlice(Input=meta)
+mslice.UpdatePipelineInformation()
+t.check(list(mslice.GetProperty("X4Range")) == [0.0, 1.0] and
+        list(mslice.GetProperty("X5Range")) == [0.0, 1.0],
+        "the parameters' sliders over [0, 1]: %s, %s" % (list(mslice.GetProperty("X4Range")),
+                                                         list(mslice.GetProperty("X5Range"))))
+x1 = list(mslice.GetProperty("X1Range"))
+t.check(-10.0 <= x1[0] < -5.0 and 5.0 < x1[1] <= 10.0, "x1 from the solid's bounds: %s" % x1)
+mslice.X4 = 0.0
+mslice.X5 = 0.0
+cat_mesh = FRepPolygonizer(Input=mslice, SampleDimensions=[40, 40, 40])
+cat_mesh.UpdatePipeline()
+cat_cells = cat_mesh.GetDataInformation().GetNumberOfCells()
+t.check(cat_cells > 1000, "the (0, 0) corner meshes: %d triangles" % cat_cells)
+meta.Alignment = 2  # Centroid and size
+mslice.X4 = 0.5
+cat_mesh.UpdatePipeline()
+t.check(cat_mesh.GetDataInformation().GetNumberOfCells() > 1000, "aligned, (0.5, 0) meshes")
+
 # --- FRep Boolean ----------------------------------------------------------------------------
 ba = HyperFunSource(ModelText="ba(x[3], a[1]) { ba = 4 - x[1]^2 - x[2]^2 - x[3]^2; }")
 bsrc = HyperFunSource(ModelText="bb(x[3], a[1]) { bb = 4 - (x[1] - 3)^2 - x[2]^2 - x[3]^2; }")

@@ -1,0 +1,111 @@
+/**
+ * @class   vtkFRepMetamorphosis
+ * @brief   key shapes on a lattice of parameters -> one vtkFRepObject of higher dimension
+ *
+ * vtkFRepMetamorphosis blends key objects (HyperFun files, AddKey) placed on a lattice of
+ * parameters (AddLatticeAxis: nodes per parameter; none: one parameter over all keys) into one
+ * object whose last coordinates are the parameters, each over [0, 1]: the engine's
+ * metamorphosis (FRep/Morph/morph_text.h, Documentation/metamorphosis.md), written as HyperFun
+ * with the keys' objects pasted in and then loaded exactly as vtkHyperFunSource loads a program
+ * (it is one: ObjectName, Parameters, coordinate ranges, UseSolidBounds, AddUserLibrary and
+ * AddShape work as there; the libraries and shapes are the keys' own). FileName and ModelText
+ * are ignored. Linear weights on a 2 x 2 lattice are the paper's bilinear formula, bit for bit.
+ * The parameters' coordinates get the interval [0, 1] unless SetCoordinateRange gives them
+ * another (the keys' coordinates get the solid's bounds, as in vtkHyperFunSource).
+ *
+ * Errors (a key file that does not load, keys of different sizes, a lattice that does not match
+ * the keys, clashing object names) are reported through vtkErrorMacro as file:line:col, and the
+ * output is left empty.
+ *
+ * @sa vtkHyperFunSource vtkFRepSlice
+ */
+#ifndef vtkFRepMetamorphosis_h
+#define vtkFRepMetamorphosis_h
+
+#include "FRepKitSourcesModule.h" // for export macro
+#include "vtkHyperFunSource.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class FREPKITSOURCES_EXPORT vtkFRepMetamorphosis : public vtkHyperFunSource
+{
+public:
+  static vtkFRepMetamorphosis* New();
+  vtkTypeMacro(vtkFRepMetamorphosis, vtkHyperFunSource);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The keys in lattice order, the first parameter fastest (on 2 x 2: (0, 0), (1, 0), (0, 1),
+   * (1, 1)): a HyperFun file and its object (null or empty: the file's my_model, else its first
+   * object). Default none.
+   */
+  void AddKey(const char* file, const char* object = nullptr);
+  void RemoveAllKeys();
+  int GetNumberOfKeys() const { return static_cast<int>(this->KeyFiles.size()); }
+  ///@}
+
+  ///@{
+  /**
+   * Nodes per parameter, one call per axis (each 2 to 64). Default none: one axis of all keys.
+   */
+  void AddLatticeAxis(int nodes);
+  void RemoveAllLatticeAxes();
+  int GetNumberOfLatticeAxes() const { return static_cast<int>(this->Lattice.size()); }
+  ///@}
+
+  enum
+  {
+    LINEAR = 0,      ///< hat functions (the paper's bilinear on 2 x 2)
+    CATMULL_ROM = 1, ///< through every key, C1
+    B_SPLINE = 2     ///< clamped uniform B-spline: C2, reaches the end keys only
+  };
+  ///@{
+  /**
+   * The weights along each parameter (default LINEAR).
+   */
+  vtkSetClampMacro(Scheme, int, LINEAR, B_SPLINE);
+  vtkGetMacro(Scheme, int);
+  void SetSchemeToLinear() { this->SetScheme(LINEAR); }
+  void SetSchemeToCatmullRom() { this->SetScheme(CATMULL_ROM); }
+  void SetSchemeToBSpline() { this->SetScheme(B_SPLINE); }
+  ///@}
+
+  enum
+  {
+    ALIGN_NONE = 0,     ///< every key in place (the paper)
+    ALIGN_CENTROID = 1, ///< each key travels with the blended centroid
+    ALIGN_SIZE = 2      ///< and is scaled to the blended size (its F alike)
+  };
+  ///@{
+  /**
+   * How the keys are aligned as the blend proceeds (default ALIGN_NONE; see
+   * Documentation/metamorphosis.md, "Keys aligned as the blend proceeds").
+   */
+  vtkSetClampMacro(Alignment, int, ALIGN_NONE, ALIGN_SIZE);
+  vtkGetMacro(Alignment, int);
+  ///@}
+
+protected:
+  /**
+   * Defaults: no keys, no lattice axes, LINEAR, ALIGN_NONE.
+   */
+  vtkFRepMetamorphosis();
+  ~vtkFRepMetamorphosis() override;
+
+  /// The metamorphosis written as HyperFun (the keys pasted), named "<metamorphosis>".
+  bool ReadProgramText(std::string& text, std::string& sourceName) override;
+
+  std::vector<std::string> KeyFiles;
+  std::vector<std::string> KeyObjects;
+  std::vector<int> Lattice;
+  int Scheme = LINEAR;
+  int Alignment = ALIGN_NONE;
+
+private:
+  vtkFRepMetamorphosis(const vtkFRepMetamorphosis&) = delete;
+  void operator=(const vtkFRepMetamorphosis&) = delete;
+};
+
+#endif

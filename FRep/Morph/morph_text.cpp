@@ -27,6 +27,7 @@ struct KeyObject
 struct KeyFile
 {
   std::string path;
+  LoadedProgram program;            // parsed once: its objects are compiled from it
   std::vector<std::string> objects; // its own objects' names, lower-case
   std::vector<SourceLocation> places;
   int first_line = 1; // of its first own object
@@ -85,6 +86,7 @@ bool read_keys(const MorphSpec& spec,
         file.places.push_back(objects[i].location);
       }
       file.first_line = file.places.empty() ? 1 : file.places.front().line;
+      file.program = program;
       files.push_back(std::move(file));
     }
     if (!found->second.ok())
@@ -207,14 +209,10 @@ std::string header(const MorphSpec& spec,
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     std::string line = "  ";
-    std::size_t rest = k;
+    const std::vector<int> nodes = weight_text::lattice_indices(k, spec.lattice);
     for (std::size_t a = 0; a < axes; ++a)
-    {
-      const int n = spec.lattice[a];
-      line += " x[" + std::to_string(d + 1 + static_cast<int>(a)) + "] = " +
-              weight_text::node_value(static_cast<int>(rest % static_cast<std::size_t>(n)), n);
-      rest /= static_cast<std::size_t>(n);
-    }
+      line += " x[" + std::to_string(d + 1 + static_cast<int>(a)) +
+              "] = " + weight_text::node_value(nodes[a], spec.lattice[a]);
     out += comment(line + ": " + keys[k].name + " (" + keys[k].file + ")");
   }
   if (placement == KeyPlacement::Library)
@@ -263,6 +261,7 @@ std::string pasted_keys(const std::vector<KeyFile>& files, std::vector<Diagnosti
 
 // Each key's frame (centroid, size), measured once per distinct key object.
 bool measure_frames(const MorphSpec& spec,
+  const std::vector<KeyFile>& files,
   const LoadOptions& key_options,
   std::vector<KeyFrame>& frames,
   std::vector<Diagnostic>& diagnostics)
@@ -274,9 +273,11 @@ bool measure_frames(const MorphSpec& spec,
     auto found = measured.find(id);
     if (found == measured.end())
     {
-      LoadOptions options = key_options;
+      const auto file = std::find_if(
+        files.begin(), files.end(), [&](const KeyFile& f) { return f.path == key.file; });
+      LoadOptions options = key_options; // its compile options
       options.object = key.object;
-      const LoadedModel loaded = load_model(ModelSource::file(key.file), options);
+      const LoadedModel loaded = compile_object(file->program, options);
       KeyFrame frame = loaded.ok() ? measure_key_frame(loaded.model->tape(), spec.frame_samples)
                                    : KeyFrame{ {}, 0.0, 0, loaded.message() };
       if (!frame.ok())
@@ -302,7 +303,7 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
     return result;
   std::vector<KeyFrame> frames;
   if (spec.alignment != Alignment::None &&
-      !measure_frames(spec, key_options, frames, result.diagnostics))
+      !measure_frames(spec, files, key_options, frames, result.diagnostics))
     return result;
   const int d = keys.front().x_dim;
   const int a_dim = keys.front().a_dim;

@@ -123,12 +123,6 @@ std::string interior(int c, int n, Interpolation scheme, int depth)
                  [&](int i, int at) { return segment(c, n, i, scheme, at); });
 }
 
-bool nonzero_test(std::string& test, const std::string& weight)
-{
-  test += (test.empty() ? "" : " and ") + std::string("(") + weight + " < 0 or " + weight + " > 0)";
-  return true;
-}
-
 // The blend of the sub-lattice of axes 0..a at the higher axes' `offset`, as morph_text.h says.
 std::string blend(int a, std::size_t offset, int d, const std::vector<int>& lattice)
 {
@@ -155,19 +149,18 @@ std::string literal(double value)
   return value < 0 ? std::string("(-") + text + ")" : std::string(text);
 }
 
-// The lattice weight of key k: the product of its nodes' weights.
-std::string key_weight(std::size_t k, int d, const std::vector<int>& lattice)
+// Key k's nodes' weights joined by `glue` ("*": the lattice weight; or a test per weight).
+std::string key_weights(std::size_t k,
+  int d,
+  const std::vector<int>& lattice,
+  const std::string& glue,
+  const std::function<std::string(const std::string&)>& each)
 {
-  std::string product;
-  std::size_t rest = k;
-  for (std::size_t a = 0; a < lattice.size(); ++a)
-  {
-    const std::size_t n = static_cast<std::size_t>(lattice[a]);
-    product += (product.empty() ? "" : "*") +
-               v("mw", d + 1 + static_cast<int>(a), static_cast<int>(rest % n));
-    rest /= n;
-  }
-  return product;
+  std::string joined;
+  const std::vector<int> nodes = lattice_indices(k, lattice);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    joined += (a ? glue : "") + each(v("mw", d + 1 + static_cast<int>(a), nodes[a]));
+  return joined;
 }
 
 // The moving frame (the keys' centroids, and sizes, blended with their weights) and each key's
@@ -182,7 +175,8 @@ std::string frame_statements(int d,
                     std::string(alignment == Alignment::CentroidAndSize ? " and sizes" : "") +
                     ", blended with their weights\n";
   for (std::size_t k = 0; k < frames.size(); ++k)
-    out += "  mW" + std::to_string(k) + " = " + key_weight(k, d, lattice) + ";\n";
+    out += "  mW" + std::to_string(k) + " = " +
+           key_weights(k, d, lattice, "*", [](const std::string& w) { return w; }) + ";\n";
   const auto blended = [&](const std::function<double(const KeyFrame&)>& of)
   {
     std::string sum;
@@ -216,6 +210,17 @@ std::string frame_statements(int d,
 }
 
 } // namespace
+
+std::vector<int> lattice_indices(std::size_t k, const std::vector<int>& lattice)
+{
+  std::vector<int> nodes;
+  for (const int n : lattice)
+  {
+    nodes.push_back(static_cast<int>(k % static_cast<std::size_t>(n)));
+    k /= static_cast<std::size_t>(n);
+  }
+  return nodes;
+}
 
 std::string node_value(int i, int n)
 {
@@ -262,14 +267,9 @@ std::string body(const std::string& name,
   out += "  -- the keys, each called where its weight is not 0\n";
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
-    std::string test;
-    std::size_t rest = k;
-    for (std::size_t a = 0; a < lattice.size(); ++a)
-    {
-      const std::size_t n = static_cast<std::size_t>(lattice[a]);
-      nonzero_test(test, v("mw", d + 1 + static_cast<int>(a), static_cast<int>(rest % n)));
-      rest /= n;
-    }
+    // Exact tests: HyperFun's /= has a tolerance of 1e-6.
+    const std::string test = key_weights(k, d, lattice, " and ",
+      [](const std::string& w) { return "(" + w + " < 0 or " + w + " > 0)"; });
     const std::string mk = "mk" + std::to_string(k);
     const std::string point = aligned ? "my" + std::to_string(k) : std::string("mx");
     const std::string scale = aligned && alignment == Alignment::CentroidAndSize

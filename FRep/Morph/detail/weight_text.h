@@ -13,6 +13,9 @@
 namespace frep::morph::weight_text
 {
 
+/// Key k's node on each lattice axis (the first axis fastest: k = i_0 + n_0 (i_1 + ...)).
+std::vector<int> lattice_indices(std::size_t k, const std::vector<int>& lattice);
+
 /// "0", "0.25", "0.3333": node i of an axis of n, for comments.
 std::string node_value(int i, int n);
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The main job: "Homotopic Fun in 5D Space" end to end. One 5-D HyperFun function
-# (Examples/homotopic/meta5d.hf) blends four key shapes of different topology — Cat, Robot,
-# NiHon, Rob_let — and Examples/homotopic/homotopic.json maps it onto multimedia coordinates:
+# The main job: "Homotopic Fun in 5D Space" end to end. One 5-D HyperFun function, Meta5D,
+# blends four key shapes of different topology — Cat, Robot, NiHon, Rob_let, the files in
+# Examples/homotopic/ — and Examples/homotopic/homotopic.json maps it onto multimedia coordinates:
 # writes into OUTDIR (default ./out/homotopic)
+#   meta5d.hf        Meta5D as drawn: the paper's blend, keys aligned by size, written by the
+#                    metamorphosis component (frepkit demo --align none: the paper's formula)
 #   spreadsheet.png  the 5x5 spreadsheet of 3-D cross-sections (x4 across, x5 down)
 #   path.png         the closed path through the (x4, x5) plane with every frame's point
 #   homotopic.mp4    10 s at 24 fps, 1280x720, with the checkerboard inset and the sound track

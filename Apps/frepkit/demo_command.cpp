@@ -1,6 +1,7 @@
 #include "demo_command.h"
 
 #include "Durable/atomic_output.h"
+#include "Morph/morph_text.h"
 #include "map_command.h"
 #include "mesh_command.h"
 #include "user_error.h"
@@ -45,12 +46,64 @@ fs::path find_examples(const std::string& requested)
   }
   for (const fs::path& c : candidates)
   {
-    if (fs::exists(c / "homotopic" / "meta5d.hf"))
+    if (fs::exists(c / "homotopic" / "homotopic.json"))
     {
       return c;
     }
   }
-  throw UserError("cannot find the examples (Examples/homotopic/meta5d.hf); give --examples DIR");
+  throw UserError(
+    "cannot find the examples (Examples/homotopic/homotopic.json); give --examples DIR");
+}
+
+// The keys of Meta5D on the paper's 2 x 2 lattice, first parameter (x4) fastest.
+constexpr std::array<const char*, 4> key_shapes{ "cat", "robot", "nihon", "roblet" };
+
+// Meta5D as the metamorphosis component writes it (Morph's write_morph) from the four key files,
+// pasted into one HyperFun file in the output folder: the model drawn is there to evaluate
+// again, by frepkit or the original interpreter. With --align none it is the paper's formula
+// (bit for bit Examples/homotopic/meta5d.hf); aligned, the keys travel and grow into each other.
+frep::morph::MorphSpec meta5d_spec(const fs::path& examples, frep::morph::Alignment alignment)
+{
+  frep::morph::MorphSpec spec;
+  for (const char* key : key_shapes)
+  {
+    spec.keys.push_back({ (examples / (std::string(key) + ".hf")).string(), key });
+  }
+  spec.lattice = { 2, 2 };
+  spec.alignment = alignment;
+  spec.name = "meta5d";
+  return spec;
+}
+
+fs::path write_meta5d(const frep::morph::MorphSpec& spec, const fs::path& out)
+{
+  const frep::morph::MorphText morph =
+    frep::morph::write_morph(spec, frep::morph::KeyPlacement::Pasted);
+  if (!morph.ok())
+  {
+    std::cerr << frep::format_diagnostics(morph.diagnostics);
+    throw UserError("writing Meta5D from the key shapes failed; nothing drawn");
+  }
+  fs::create_directories(out);
+  const fs::path model = out / "meta5d.hf";
+  frep::durable::AtomicOutput file(model.string());
+  file.stream() << morph.text;
+  file.commit();
+  return model;
+}
+
+nlohmann::json morph_json(const frep::morph::MorphSpec& spec)
+{
+  nlohmann::json keys = nlohmann::json::array();
+  for (const frep::morph::Key& key : spec.keys)
+  {
+    keys.push_back(
+      { { "file", fs::path(key.file).filename().string() }, { "object", key.object } });
+  }
+  return { { "keys", keys },
+    { "lattice", spec.lattice },
+    { "scheme", frep::morph::interpolation_name(spec.scheme) },
+    { "alignment", frep::morph::alignment_name(spec.alignment) } };
 }
 
 std::size_t stl_triangles(const fs::path& stl)
@@ -85,6 +138,13 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
     ->check(CLI::IsMember({ "mesh", "raycast" }));
   cmd->add_option("--mesh-grid", o.mesh_grid, "grid of the key shapes' STL meshes (default 256)")
     ->check(CLI::Range(8, 2048));
+  cmd
+    ->add_option("--align",
+      o.align,
+      "how Meta5D blends its keys: size (each key travels and grows into the blended centroid "
+      "and size), centroid, or none (the paper's formula as it stands)")
+    ->check(CLI::IsMember({ "none", "centroid", "size" }))
+    ->capture_default_str();
   cmd->add_flag("--force", o.force, "render every frame again");
   cmd->add_option("-j,--threads", o.threads, "worker threads (default: all cores)")
     ->check(CLI::Range(0, 1024));
@@ -98,9 +158,13 @@ int run_demo(const DemoOptions& options)
   const fs::path examples = find_examples(options.examples) / "homotopic";
   const fs::path out(options.output_directory);
 
-  // 1. The mapping (it validates everything before writing anything).
+  // 1. The model, written from the key files; then the mapping (it validates everything
+  // before writing any picture).
+  const frep::morph::MorphSpec morph =
+    meta5d_spec(examples, *frep::morph::alignment_from_name(options.align));
+  const fs::path model = write_meta5d(morph, out);
   MapOptions map;
-  map.model = (examples / "meta5d.hf").string();
+  map.model = model.string();
   map.mapping = (examples / "homotopic.json").string();
   map.output_directory = out.string();
   map.name = "homotopic";
@@ -119,10 +183,9 @@ int run_demo(const DemoOptions& options)
   }
 
   // 2. The four key shapes, each from its own file, on the common box.
-  const std::array<const char*, 4> shapes{ "cat", "robot", "nihon", "roblet" };
   nlohmann::json meshes = nlohmann::json::array();
   const auto t0 = std::chrono::steady_clock::now();
-  for (const char* shape : shapes)
+  for (const char* shape : key_shapes)
   {
     MeshOptions mesh;
     mesh.model = (examples / (std::string(shape) + ".hf")).string();
@@ -152,6 +215,8 @@ int run_demo(const DemoOptions& options)
     throw UserError("internal error: the map's manifest is not a JSON object");
   }
   manifest["demo"] = "Homotopic Fun in 5D Space";
+  manifest["model"] = model.filename().string(); // in the output folder, beside the manifest
+  manifest["morph"] = morph_json(morph);
   for (auto& m : meshes)
   {
     manifest["files"].push_back(m);

@@ -1,7 +1,9 @@
-// frepkit demo homotopic -O DIR: the main job, "Homotopic Fun in 5D Space" end to end: the four
-// key shapes as binary STL meshes (cat.stl, robot.stl, nihon.stl, roblet.stl), then the mapping
-// Examples/homotopic/homotopic.json of Meta5D through `frepkit map` (spreadsheet.png, path.png,
-// frames/, homotopic.wav, homotopic.mp4), and one manifest.json listing all of it.
+// frepkit demo homotopic -O DIR: the main job, "Homotopic Fun in 5D Space" end to end: Meta5D
+// written from the four key files by the metamorphosis component (meta5d.hf, keys aligned by
+// size unless --align says otherwise), the mapping Examples/homotopic/homotopic.json of it
+// through `frepkit map` (spreadsheet.png, path.png, frames/, homotopic.wav, homotopic.mp4), the
+// four key shapes as binary STL meshes (cat.stl, robot.stl, nihon.stl, roblet.stl), and one
+// manifest.json listing all of it (with the model's file and how it was blended).
 #pragma once
 
 #include <optional>
@@ -23,7 +25,8 @@ struct DemoOptions
   std::optional<int> frames;
   std::optional<int> resolution;
   std::optional<std::string> method; ///< overrides the mapping's render.method (mesh | raycast)
-  int mesh_grid = 256; ///< grid of the key shapes' meshes
+  int mesh_grid = 256;               ///< grid of the key shapes' meshes
+  std::string align = "size";        ///< Meta5D's keys aligned: none (the paper), centroid or size
   bool force = false;
   int threads = 0;
   bool quiet = false;

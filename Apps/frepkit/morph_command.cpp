@@ -63,26 +63,34 @@ CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
     "Write a metamorphosis: key shapes (HyperFun objects of the same coordinates) on a lattice "
     "of parameters, blended into one HyperFun model with the parameters as its last "
     "coordinates, each over [0, 1]. Linear on 2x2 is the paper's bilinear formula.");
-  morph->add_option("keys", options.keys,
-         "Key shapes FILE.hf or FILE.hf:OBJECT in lattice order, the first parameter fastest "
-         "(2x2: x4=0 x5=0, x4=1 x5=0, x4=0 x5=1, x4=1 x5=1)")
+  morph
+    ->add_option("keys",
+      options.keys,
+      "Key shapes FILE.hf or FILE.hf:OBJECT in lattice order, the first parameter fastest "
+      "(2x2: x4=0 x5=0, x4=1 x5=0, x4=0 x5=1, x4=1 x5=1)")
     ->required();
-  morph->add_option("--lattice", options.lattice,
+  morph->add_option("--lattice",
+    options.lattice,
     "Nodes per parameter, e.g. 2x2 (two parameters) or 5 (one); default: one parameter over "
     "all keys");
-  morph->add_option("--scheme", options.scheme,
-          "Weights: linear, catmull-rom (through every key, C1) or b-spline (smooth, C2: "
-          "reaches the end keys only)")
+  morph
+    ->add_option("--scheme",
+      options.scheme,
+      "Weights: linear, catmull-rom (through every key, C1) or b-spline (smooth, C2: "
+      "reaches the end keys only)")
     ->check(CLI::IsMember({ "linear", "catmull-rom", "b-spline" }))
     ->capture_default_str();
   morph->add_option("--name", options.name, "The object written (my_model calls it)")
     ->capture_default_str();
-  morph->add_option("--align", options.align,
-          "Align the keys as the blend proceeds: none (the paper), centroid (each key travels "
-          "with the blended centroid) or size (and is scaled to the blended size, its F alike)")
+  morph
+    ->add_option("--align",
+      options.align,
+      "Align the keys as the blend proceeds: none (the paper), centroid (each key travels "
+      "with the blended centroid) or size (and is scaled to the blended size, its F alike)")
     ->check(CLI::IsMember({ "none", "centroid", "size" }))
     ->capture_default_str();
-  morph->add_flag("--paste", options.paste,
+  morph->add_flag("--paste",
+    options.paste,
     "Copy the keys' objects into the file (one file the original HyperFun reads); default: "
     "call them from their files, loaded with --library");
   morph->add_option("-o,--output", options.output, "The model file to write (- for stdout)")
@@ -99,9 +107,7 @@ int run_morph(const MorphOptions& options)
   spec.lattice = parse_lattice(options.lattice, spec.keys.size());
   spec.scheme = *frep::morph::interpolation_from_name(options.scheme);
   spec.name = options.name;
-  spec.alignment = options.align == "centroid" ? frep::morph::Alignment::Centroid
-                   : options.align == "size"   ? frep::morph::Alignment::CentroidAndSize
-                                               : frep::morph::Alignment::None;
+  spec.alignment = *frep::morph::alignment_from_name(options.align);
   const frep::morph::KeyPlacement placement =
     options.paste ? frep::morph::KeyPlacement::Pasted : frep::morph::KeyPlacement::Library;
   const frep::morph::MorphText morph =
@@ -117,8 +123,8 @@ int run_morph(const MorphOptions& options)
   out.commit();
   if (options.output != "-")
   {
-    std::cerr << "frepkit: wrote " << options.output << ": " << spec.name << " of x["
-              << morph.x_dim << "] from " << spec.keys.size() << " keys";
+    std::cerr << "frepkit: wrote " << options.output << ": " << spec.name << " of x[" << morph.x_dim
+              << "] from " << spec.keys.size() << " keys";
     if (!morph.libraries.empty())
     {
       std::cerr << "; load it with";

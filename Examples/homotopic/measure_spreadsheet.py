@@ -15,8 +15,14 @@ meta5d.hf with the frepkit command-line tool, nothing else:
             component's share of the enclosed volume (scattered slivers: many components, a
             small largest share).
 
+  movie     with --frames MANIFEST (a manifest.json of frepkit demo or map, whose frames entry
+            lists every frame's x4 and x5): the change from each frame to the next, 1 - overlap
+            of the two frames' inside samples on a --movie-grid^3 grid, and the issue's goal: no
+            change above 3 times the median change (a pop instead of a flow).
+
   python3 measure_spreadsheet.py [--model meta5d.hf] [--object meta5d] [--frepkit FREPKIT]
-                                 [--grid 64] [--mesh-grid 128] [--json FILE] [-- FREPKIT_ARGS]
+                                 [--grid 64] [--mesh-grid 128] [--frames MANIFEST]
+                                 [--movie-grid 32] [--json FILE] [-- FREPKIT_ARGS]
 
 FREPKIT_ARGS (after --) go to every frepkit eval and mesh, e.g. --library or --shape for a
 metamorphosis written by frepkit morph whose keys call meshes (Documentation/metamorphosis.md).
@@ -143,6 +149,43 @@ def goals(cells):
              'PASS' if spread <= 0.15 else 'MISS (goal 0.15)'))
 
 
+def overlap(a, b):
+    """Intersection over union of two lists of inside flags (1 when both are empty)."""
+    both = sum(1 for p, q in zip(a, b) if p and q)
+    either = sum(1 for p, q in zip(a, b) if p or q)
+    return both / either if either else 1.0
+
+
+def frame_values(manifest):
+    """Every frame's (x4, x5), in order, from a manifest's frames entry."""
+    entries = [f for f in json.loads(pathlib.Path(manifest).read_text())['files']
+               if f.get('kind') == 'frames']
+    if not entries:
+        sys.exit('%s: no frames entry' % manifest)
+    return [(f['values']['x4'], f['values']['x5']) for f in entries[0]['frames']]
+
+
+def movie(frepkit, model, obj, manifest, n):
+    """The change from frame to frame along the movie (1 - overlap of consecutive frames) and
+    the issue's goal: no change above 3 times the median."""
+    xyz = ['%.9g %.9g %.9g' % q for q in grid_points(n)]
+    values = frame_values(manifest)
+    frames = [evaluate(frepkit, model, obj, ['%s %.17g %.17g' % (q, x4, x5) for q in xyz])[0]
+              for x4, x5 in values]
+    changes = [1.0 - overlap(a, b) for a, b in zip(frames, frames[1:])]
+    median = statistics.median(changes) if changes else 0.0
+    worst = max(range(len(changes)), key=changes.__getitem__) if changes else 0
+    ratio = changes[worst] / median if median > 0 else (0.0 if not changes or changes[worst] == 0 else float('inf'))
+    print('\nmovie: %d frames of %s on a %d^3 grid: change from frame to frame (1 - overlap)'
+          % (len(frames), manifest, n))
+    print('  median %.4f, largest %.4f (frame %d -> %d, x4 %.3f x5 %.3f), largest/median %.1f %s'
+          % (median, changes[worst] if changes else 0, worst, worst + 1, values[worst][0],
+             values[worst][1], ratio, 'PASS' if ratio <= 3 else 'MISS (goal 3)'))
+    return {'manifest': str(manifest), 'grid': n, 'values': values, 'changes': changes,
+            'median': median, 'largest': changes[worst] if changes else 0, 'largest_frame': worst,
+            'ratio': ratio}
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument('--model', default=str(HERE / 'meta5d.hf'))
@@ -151,6 +194,8 @@ def main():
     p.add_argument('--grid', type=int, default=64, help='volume samples per axis (default 64)')
     p.add_argument('--mesh-grid', type=int, default=128,
                    help='mesh samples per axis, as the spreadsheet (default 128; 0: no meshes)')
+    p.add_argument('--frames', help="a manifest.json whose frames' x4, x5 the movie measure follows")
+    p.add_argument('--movie-grid', type=int, default=32, help='movie samples per axis (default 32)')
     p.add_argument('--json', help='write every number to this file')
     argv = sys.argv[1:]
     if '--' in argv:
@@ -178,9 +223,8 @@ def main():
             for obj, _ in KEYS:
                 k = keys[obj]
                 both = sum(1 for a, b in zip(inside, k) if a and b)
-                either = sum(1 for a, b in zip(inside, k) if a or b)
                 cell['keys_percent'][obj] = 100.0 * both / max(1, sum(k))
-                cell['overlap'][obj] = both / max(1, either)
+                cell['overlap'][obj] = overlap(inside, k)
             cells.append(cell)
     if args.mesh_grid > 0:
         with tempfile.TemporaryDirectory() as work:
@@ -216,9 +260,11 @@ def main():
     print('         the (0.5, 0.5) cell shows %s' % ', '.join(
         '%.0f%% of %s' % (mid['keys_percent'][o], n) for o, n in KEYS))
     goals(cells)
+    film = movie(frepkit, model, args.object, args.frames, args.movie_grid) if args.frames else None
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps({'model': str(model), 'grid': args.grid,
-                                                       'mesh_grid': args.mesh_grid, 'cells': cells}, indent=1))
+                                                       'mesh_grid': args.mesh_grid, 'cells': cells,
+                                                       'movie': film}, indent=1))
 
 
 if __name__ == '__main__':

@@ -10,6 +10,31 @@
 namespace frep::morph
 {
 
+std::optional<Alignment> alignment_from_name(std::string_view name)
+{
+  if (name == "none")
+    return Alignment::None;
+  if (name == "centroid")
+    return Alignment::Centroid;
+  if (name == "size")
+    return Alignment::CentroidAndSize;
+  return std::nullopt;
+}
+
+std::string_view alignment_name(Alignment alignment)
+{
+  switch (alignment)
+  {
+    case Alignment::None:
+      return "none";
+    case Alignment::Centroid:
+      return "centroid";
+    case Alignment::CentroidAndSize:
+      return "size";
+  }
+  return "none";
+}
+
 KeyFrame measure_key_frame(const std::shared_ptr<const Tape>& tape, int samples)
 {
   KeyFrame frame;
@@ -37,7 +62,9 @@ KeyFrame measure_key_frame(const std::shared_ptr<const Tape>& tape, int samples)
     options.sign_only = true; // only the side matters
     options.threads = 1;      // a key at a time; the caller may measure keys side by side
     std::vector<double> sum(d, 0.0);
-    const SampleResult result = sample_grid(tape, box_grid(lo, hi, count), options,
+    const SampleResult result = sample_grid(tape,
+      box_grid(lo, hi, count),
+      options,
       [&](const SampleBlock& block)
       {
         for (std::size_t p = 0; p < block.count; ++p)

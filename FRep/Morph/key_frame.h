@@ -8,7 +8,9 @@
 #include "Compiler/tape.h"
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace frep::morph
@@ -21,6 +23,10 @@ enum class Alignment
   Centroid,       ///< each key moved so that its centroid follows the blended centroid
   CentroidAndSize ///< moved and scaled (about its centroid) to the blended size, F scaled alike
 };
+
+/// "none", "centroid", "size" (the names of frepkit's --align and the manifests); nullopt else.
+std::optional<Alignment> alignment_from_name(std::string_view name);
+std::string_view alignment_name(Alignment alignment);
 
 struct KeyFrame
 {

@@ -3,7 +3,9 @@
 # with 48 frames instead of 240 to keep the suite short: every output exists; the spreadsheet
 # has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
 # count and an audio stream of the same duration; the key shapes' STL files are closed
-# meshes; the manifest lists everything.
+# meshes; the manifest lists everything and names the model drawn (meta5d.hf in the output folder,
+# written from the key files by the metamorphosis component, keys aligned by size), whose corners
+# are the key files' objects exactly.
 #   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK SPREADSHEET_BASELINE FRAME_BASELINE
 set -u
 frepkit=$(realpath "$1")
@@ -23,7 +25,7 @@ near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d
 
 run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48
 echo "$err"
-for f in spreadsheet.png path.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
+for f in meta5d.hf spreadsheet.png path.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
   if [ -s "demo/$f" ]; then pass "demo/$f written"; else fail "demo/$f missing"; fi
 done
 
@@ -65,6 +67,19 @@ done
 
 count=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print(len(m['files']))")
 expect_in "manifest lists 4 pictures/sounds/movies + 4 meshes" "files $count" "files 9"
+
+line=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print('model', m['model'], 'object', m['object'], 'alignment', m['morph']['alignment'], 'keys', len(m['morph']['keys']))")
+expect_in "manifest names the model drawn" "$line" "model meta5d.hf object meta5d alignment size keys 4"
+examples=$(dirname "$frepkit")/../share/frepkit/examples/homotopic
+points="0.5 1 -2
+-3 2.5 4
+1.25 -0.75 0.3"
+for key in "cat 0 0" "robot 1 0" "nihon 0 1" "roblet 1 1"; do
+  set -- $key
+  blend=$(echo "$points" | awk -v a="$2" -v b="$3" '{ print $0, a, b }' | "$frepkit" eval demo/meta5d.hf -o meta5d)
+  own=$(echo "$points" | "$frepkit" eval "$examples/$1.hf" -o "$1")
+  if [ -n "$own" ] && [ "$blend" == "$own" ]; then pass "meta5d.hf at ($2, $3) is $1.hf exactly"; else fail "meta5d.hf at ($2, $3): '$blend' vs $1.hf '$own'"; fi
+done
 
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -63,13 +63,16 @@ bool vtkFRepMetamorphosis::ReadProgramText(std::string& text, std::string& sourc
     spec.lattice = { static_cast<int>(spec.keys.size()) };
   }
   spec.scheme = this->Scheme == CATMULL_ROM ? frep::morph::Interpolation::CatmullRom
-    : this->Scheme == B_SPLINE              ? frep::morph::Interpolation::BSpline
+                : this->Scheme == B_SPLINE  ? frep::morph::Interpolation::BSpline
                                             : frep::morph::Interpolation::Linear;
   spec.alignment = this->Alignment == ALIGN_CENTROID ? frep::morph::Alignment::Centroid
-    : this->Alignment == ALIGN_SIZE                  ? frep::morph::Alignment::CentroidAndSize
+                   : this->Alignment == ALIGN_SIZE   ? frep::morph::Alignment::CentroidAndSize
                                                      : frep::morph::Alignment::None;
+  spec.normalisation = this->Normalisation == NORMALISE_DISTANCE
+                         ? frep::morph::Normalisation::Distance
+                         : frep::morph::Normalisation::None;
   frep::LoadOptions keyOptions;
-  if (!this->AddUserFunctions(keyOptions))
+  if (!this->Superclass::AddUserFunctions(keyOptions))
   {
     return false;
   }
@@ -99,8 +102,34 @@ bool vtkFRepMetamorphosis::ReadProgramText(std::string& text, std::string& sourc
       this->CoordinateRanges[index] = { 0.0, 1.0 };
     }
   }
+  this->Distances = morph.functions;
   text = morph.text;
   sourceName = "<metamorphosis>";
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkFRepMetamorphosis::AddUserFunctions(frep::LoadOptions& options)
+{
+  if (!this->Superclass::AddUserFunctions(options))
+  {
+    return false;
+  }
+  if (!this->Distances || this->Distances->empty())
+  {
+    return true;
+  }
+  auto merged = std::make_shared<frep::UserFunctionRegistry>();
+  for (const auto& registry : { options.functions, this->Distances })
+  {
+    const std::string e = registry ? merged->merge(*registry) : std::string();
+    if (!e.empty())
+    {
+      vtkErrorMacro(<< "the keys' distances: " << e);
+      return false;
+    }
+  }
+  options.functions = std::move(merged);
   return true;
 }
 
@@ -111,7 +140,8 @@ void vtkFRepMetamorphosis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Keys (" << this->KeyFiles.size() << "):";
   for (std::size_t i = 0; i < this->KeyFiles.size(); ++i)
   {
-    os << " " << this->KeyFiles[i] << (this->KeyObjects[i].empty() ? "" : ":") << this->KeyObjects[i];
+    os << " " << this->KeyFiles[i] << (this->KeyObjects[i].empty() ? "" : ":")
+       << this->KeyObjects[i];
   }
   os << "\n" << indent << "Lattice:";
   for (const int n : this->Lattice)
@@ -121,4 +151,5 @@ void vtkFRepMetamorphosis::PrintSelf(ostream& os, vtkIndent indent)
   os << (this->Lattice.empty() ? " (one axis of every key)" : "") << "\n";
   os << indent << "Scheme: " << this->Scheme << "\n";
   os << indent << "Alignment: " << this->Alignment << "\n";
+  os << indent << "Normalisation: " << this->Normalisation << "\n";
 }

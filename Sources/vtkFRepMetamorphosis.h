@@ -25,8 +25,14 @@
 #include "FRepKitSourcesModule.h" // for export macro
 #include "vtkHyperFunSource.h"
 
+#include <memory> // for std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
+
+namespace frep
+{
+class UserFunctionRegistry;
+}
 
 class FREPKITSOURCES_EXPORT vtkFRepMetamorphosis : public vtkHyperFunSource
 {
@@ -87,21 +93,39 @@ public:
   vtkGetMacro(Alignment, int);
   ///@}
 
+  enum
+  {
+    NORMALISE_NONE = 0,    ///< the keys' values as they are (the paper)
+    NORMALISE_DISTANCE = 1 ///< each key's sampled signed distance added beyond a band
+  };
+  ///@{
+  /**
+   * How the keys' values are made comparable (default NORMALISE_NONE; see
+   * Documentation/metamorphosis.md, "Comparable fields"). The keys' zero sets stay exact.
+   */
+  vtkSetClampMacro(Normalisation, int, NORMALISE_NONE, NORMALISE_DISTANCE);
+  vtkGetMacro(Normalisation, int);
+  ///@}
+
 protected:
   /**
-   * Defaults: no keys, no lattice axes, LINEAR, ALIGN_NONE.
+   * Defaults: no keys, no lattice axes, LINEAR, ALIGN_NONE, NORMALISE_NONE.
    */
   vtkFRepMetamorphosis();
   ~vtkFRepMetamorphosis() override;
 
   /// The metamorphosis written as HyperFun (the keys pasted), named "<metamorphosis>".
   bool ReadProgramText(std::string& text, std::string& sourceName) override;
+  /// The base's functions and the keys' distances of the last program written.
+  bool AddUserFunctions(frep::LoadOptions& options) override;
 
   std::vector<std::string> KeyFiles;
   std::vector<std::string> KeyObjects;
   std::vector<int> Lattice;
   int Scheme = LINEAR;
   int Alignment = ALIGN_NONE;
+  int Normalisation = NORMALISE_NONE;
+  std::shared_ptr<const frep::UserFunctionRegistry> Distances; ///< of the last program written
 
 private:
   vtkFRepMetamorphosis(const vtkFRepMetamorphosis&) = delete;

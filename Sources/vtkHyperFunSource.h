@@ -204,7 +204,7 @@ protected:
    * Puts the user libraries (AddUserLibrary) and shapes (AddShape) into `options`; false after
    * reporting a shape that cannot be registered.
    */
-  bool AddUserFunctions(frep::LoadOptions& options);
+  virtual bool AddUserFunctions(frep::LoadOptions& options);
 
 private:
   vtkHyperFunSource(const vtkHyperFunSource&) = delete;

@@ -4,6 +4,7 @@
 #include "Morph/morph_text.h"
 #include "map_command.h"
 #include "mesh_command.h"
+#include "morph_command.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
@@ -62,7 +63,9 @@ constexpr std::array<const char*, 4> key_shapes{ "cat", "robot", "nihon", "roble
 // pasted into one HyperFun file in the output folder: the model drawn is there to evaluate
 // again, by frepkit or the original interpreter. With --align none it is the paper's formula
 // (bit for bit Examples/homotopic/meta5d.hf); aligned, the keys travel and grow into each other.
-frep::morph::MorphSpec meta5d_spec(const fs::path& examples, frep::morph::Alignment alignment)
+frep::morph::MorphSpec meta5d_spec(const fs::path& examples,
+  frep::morph::Alignment alignment,
+  frep::morph::Normalisation normalisation)
 {
   frep::morph::MorphSpec spec;
   for (const char* key : key_shapes)
@@ -71,11 +74,14 @@ frep::morph::MorphSpec meta5d_spec(const fs::path& examples, frep::morph::Alignm
   }
   spec.lattice = { 2, 2 };
   spec.alignment = alignment;
+  spec.normalisation = normalisation;
   spec.name = "meta5d";
   return spec;
 }
 
-fs::path write_meta5d(const frep::morph::MorphSpec& spec, const fs::path& out)
+// meta5d.hf in `out`, and with distances the keys' volumes beside it; returns the --shape
+// arguments that load it (none without distances).
+std::vector<std::string> write_meta5d(const frep::morph::MorphSpec& spec, const fs::path& model)
 {
   const frep::morph::MorphText morph =
     frep::morph::write_morph(spec, frep::morph::KeyPlacement::Pasted);
@@ -84,12 +90,12 @@ fs::path write_meta5d(const frep::morph::MorphSpec& spec, const fs::path& out)
     std::cerr << frep::format_diagnostics(morph.diagnostics);
     throw UserError("writing Meta5D from the key shapes failed; nothing drawn");
   }
-  fs::create_directories(out);
-  const fs::path model = out / "meta5d.hf";
+  fs::create_directories(model.parent_path());
+  std::vector<std::string> shapes = write_distances(morph, model.string());
   frep::durable::AtomicOutput file(model.string());
   file.stream() << morph.text;
   file.commit();
-  return model;
+  return shapes;
 }
 
 nlohmann::json morph_json(const frep::morph::MorphSpec& spec)
@@ -103,7 +109,8 @@ nlohmann::json morph_json(const frep::morph::MorphSpec& spec)
   return { { "keys", keys },
     { "lattice", spec.lattice },
     { "scheme", frep::morph::interpolation_name(spec.scheme) },
-    { "alignment", frep::morph::alignment_name(spec.alignment) } };
+    { "alignment", frep::morph::alignment_name(spec.alignment) },
+    { "normalisation", frep::morph::normalisation_name(spec.normalisation) } };
 }
 
 std::size_t stl_triangles(const fs::path& stl)
@@ -145,6 +152,14 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
       "and size), centroid, or none (the paper's formula as it stands)")
     ->check(CLI::IsMember({ "none", "centroid", "size" }))
     ->capture_default_str();
+  cmd
+    ->add_option("--normalise",
+      o.normalise,
+      "Meta5D's keys' values: none (as the key files give them) or distance (each key's "
+      "sampled signed distance added beyond a band about its surface, written beside "
+      "meta5d.hf as meta5d-KEY-distance.vti)")
+    ->check(CLI::IsMember({ "none", "distance" }))
+    ->capture_default_str();
   cmd->add_flag("--force", o.force, "render every frame again");
   cmd->add_option("-j,--threads", o.threads, "worker threads (default: all cores)")
     ->check(CLI::Range(0, 1024));
@@ -160,10 +175,12 @@ int run_demo(const DemoOptions& options)
 
   // 1. The model, written from the key files; then the mapping (it validates everything
   // before writing any picture).
-  const frep::morph::MorphSpec morph =
-    meta5d_spec(examples, *frep::morph::alignment_from_name(options.align));
-  const fs::path model = write_meta5d(morph, out);
+  const frep::morph::MorphSpec morph = meta5d_spec(examples,
+    *frep::morph::alignment_from_name(options.align),
+    *frep::morph::normalisation_from_name(options.normalise));
+  const fs::path model = out / "meta5d.hf";
   MapOptions map;
+  map.user.shapes = write_meta5d(morph, model);
   map.model = model.string();
   map.mapping = (examples / "homotopic.json").string();
   map.output_directory = out.string();
@@ -217,6 +234,12 @@ int run_demo(const DemoOptions& options)
   manifest["demo"] = "Homotopic Fun in 5D Space";
   manifest["model"] = model.filename().string(); // in the output folder, beside the manifest
   manifest["morph"] = morph_json(morph);
+  for (const std::string& shape : map.user.shapes) // "mdist_cat=<out>/meta5d-cat-distance.vti"
+  {
+    const std::size_t equals = shape.find('=');
+    manifest["morph"]["shapes"][shape.substr(0, equals)] =
+      fs::path(shape.substr(equals + 1)).filename().string();
+  }
   for (auto& m : meshes)
   {
     manifest["files"].push_back(m);

@@ -27,6 +27,7 @@ struct DemoOptions
   std::optional<std::string> method; ///< overrides the mapping's render.method (mesh | raycast)
   int mesh_grid = 256;               ///< grid of the key shapes' meshes
   std::string align = "size";        ///< Meta5D's keys aligned: none (the paper), centroid or size
+  std::string normalise = "none";    ///< Meta5D's keys' values: none or distance
   bool force = false;
   int threads = 0;
   bool quiet = false;

@@ -3,9 +3,11 @@
 #include "Durable/atomic_output.h"
 #include "Morph/morph_text.h"
 #include "model_loading.h"
+#include "section_writers/vti_writer.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 
 #include <iostream>
 #include <sstream>
@@ -57,6 +59,32 @@ std::vector<int> parse_lattice(const std::string& text, std::size_t keys)
 
 } // namespace
 
+std::vector<std::string> write_distances(const frep::morph::MorphText& morph,
+  const std::string& model)
+{
+  std::vector<std::string> shapes;
+  const std::filesystem::path path(model);
+  for (const frep::morph::DistanceVolume& distance : morph.distances)
+  {
+    SampledSection volume;
+    volume.axes = 3;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      volume.samples[k] = distance.grid.dims[k];
+      volume.origin[k] = distance.grid.origin[k];
+      volume.spacing[k] = distance.grid.spacing[k];
+    }
+    volume.values = distance.grid.values;
+    const std::filesystem::path file =
+      path.parent_path() / (path.stem().string() + "-" + distance.key + "-distance.vti");
+    frep::durable::AtomicOutput out(file.string());
+    write_vti(out.stream(), volume);
+    out.commit();
+    shapes.push_back(distance.function + "=" + file.string());
+  }
+  return shapes;
+}
+
 CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
 {
   CLI::App* morph = app.add_subcommand("morph",
@@ -89,6 +117,14 @@ CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
       "with the blended centroid) or size (and is scaled to the blended size, its F alike)")
     ->check(CLI::IsMember({ "none", "centroid", "size" }))
     ->capture_default_str();
+  morph
+    ->add_option("--normalise",
+      options.normalise,
+      "Make the keys' values comparable: none (as they are) or distance (beyond a band about "
+      "its surface each key gains its signed distance, sampled and written beside the model as "
+      "STEM-KEY-distance.vti; the keys' zero sets are kept exactly)")
+    ->check(CLI::IsMember({ "none", "distance" }))
+    ->capture_default_str();
   morph->add_flag("--paste",
     options.paste,
     "Copy the keys' objects into the file (one file the original HyperFun reads); default: "
@@ -108,6 +144,12 @@ int run_morph(const MorphOptions& options)
   spec.scheme = *frep::morph::interpolation_from_name(options.scheme);
   spec.name = options.name;
   spec.alignment = *frep::morph::alignment_from_name(options.align);
+  spec.normalisation = *frep::morph::normalisation_from_name(options.normalise);
+  if (spec.normalisation != frep::morph::Normalisation::None && options.output == "-")
+  {
+    throw UserError(
+      "--normalise distance writes the keys' distances beside the model: give -o FILE");
+  }
   const frep::morph::KeyPlacement placement =
     options.paste ? frep::morph::KeyPlacement::Pasted : frep::morph::KeyPlacement::Library;
   const frep::morph::MorphText morph =
@@ -118,6 +160,7 @@ int run_morph(const MorphOptions& options)
     throw UserError("morph: " + std::to_string(morph.diagnostics.size()) +
                     (morph.diagnostics.size() == 1 ? " error" : " errors") + ", nothing written");
   }
+  const std::vector<std::string> shapes = write_distances(morph, options.output);
   frep::durable::AtomicOutput out(options.output);
   out.stream() << morph.text;
   out.commit();
@@ -130,6 +173,12 @@ int run_morph(const MorphOptions& options)
       std::cerr << "; load it with";
       for (const std::string& library : morph.libraries)
         std::cerr << " --library " << library;
+    }
+    if (!shapes.empty())
+    {
+      std::cerr << (morph.libraries.empty() ? "; load it with" : "");
+      for (const std::string& shape : shapes)
+        std::cerr << " --shape " << shape;
     }
     std::cerr << '\n';
   }

@@ -2,6 +2,7 @@
 // parameters written as one HyperFun model of higher dimension (the engine's Morph/morph_text.h).
 #pragma once
 
+#include "Morph/morph_text.h"
 #include "user_inputs.h"
 
 #include <string>
@@ -17,15 +18,23 @@ namespace frepkit
 
 struct MorphOptions
 {
-  UserInputs user; ///< the keys' own --library and --shape
+  UserInputs user;               ///< the keys' own --library and --shape
   std::vector<std::string> keys; ///< FILE or FILE:OBJECT, in lattice order
   std::string lattice;           ///< "2x2", "5", "3x3x2"; empty: one axis of every key
   std::string scheme = "linear";
   std::string name = "morph";
   bool paste = false;
   std::string align = "none";
+  std::string normalise = "none";
   std::string output;
 };
+
+/// The keys' sampled distances of `morph` (Normalisation::Distance) written beside `model` as
+/// MODELSTEM-KEY-distance.vti (each put in place durably); returns the --shape arguments that
+/// load the model again ("mdist_cat=/out/meta5d-cat-distance.vti"), none without distances.
+/// A UserError when the build has no .vti writer.
+std::vector<std::string> write_distances(const frep::morph::MorphText& morph,
+  const std::string& model);
 
 CLI::App* add_morph_command(CLI::App& app, MorphOptions& options);
 

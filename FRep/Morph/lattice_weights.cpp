@@ -41,7 +41,8 @@ void catmull_rom(std::vector<double>& w, double t)
   const double from = 0.5 * (2.0 + u * u * (-5.0 + 3.0 * u));
   const double to = 0.5 * u * (1.0 + u * (4.0 - 3.0 * u));
   const double after = 0.5 * u * u * (u - 1.0);
-  const auto at = [&](int k) -> double& { return w[static_cast<std::size_t>(std::clamp(k, 0, n - 1))]; };
+  const auto at = [&](int k) -> double&
+  { return w[static_cast<std::size_t>(std::clamp(k, 0, n - 1))]; };
   at(i - 1) += before;
   at(i) += from;
   at(i + 1) += to;
@@ -76,8 +77,9 @@ void b_spline(std::vector<double>& w, double t)
     double saved = 0.0;
     for (int r = 0; r < j; ++r)
     {
-      const double temp = basis[static_cast<std::size_t>(r)] /
-                          (right[static_cast<std::size_t>(r + 1)] + left[static_cast<std::size_t>(j - r)]);
+      const double temp =
+        basis[static_cast<std::size_t>(r)] /
+        (right[static_cast<std::size_t>(r + 1)] + left[static_cast<std::size_t>(j - r)]);
       basis[static_cast<std::size_t>(r)] = saved + right[static_cast<std::size_t>(r + 1)] * temp;
       saved = left[static_cast<std::size_t>(j - r)] * temp;
     }

@@ -1,6 +1,7 @@
 #include "Morph/morph_text.h"
 
 #include "Morph/detail/weight_text.h"
+#include "Shapes/shape_functions.h"
 
 #include <algorithm>
 #include <cctype>
@@ -42,13 +43,16 @@ bool valid_name(const std::string& name)
 {
   if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0])))
     return false;
-  return std::all_of(name.begin(), name.end(),
+  return std::all_of(name.begin(),
+    name.end(),
     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 std::string lower(std::string s)
 {
-  std::transform(s.begin(), s.end(), s.begin(),
+  std::transform(s.begin(),
+    s.end(),
+    s.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
@@ -80,7 +84,8 @@ bool read_keys(const MorphSpec& spec,
       file.path = key.file;
       const auto& objects = program.program->objects;
       for (std::size_t i = static_cast<std::size_t>(program.program->first_own_object);
-           i < objects.size(); ++i)
+           i < objects.size();
+           ++i)
       {
         file.objects.push_back(objects[i].name);
         file.places.push_back(objects[i].location);
@@ -95,8 +100,8 @@ bool read_keys(const MorphSpec& spec,
     if (index < 0)
       continue;
     const ast::Object& object = found->second.program->objects[static_cast<std::size_t>(index)];
-    keys.push_back(
-      KeyObject{ key.file, object.name, object.location, object.x_dim, object.a_dim, object.s_dim });
+    keys.push_back(KeyObject{
+      key.file, object.name, object.location, object.x_dim, object.a_dim, object.s_dim });
   }
   return diagnostics.empty();
 }
@@ -114,8 +119,11 @@ bool check_spec(const MorphSpec& spec, std::vector<Diagnostic>& diagnostics)
 {
   const std::string here = "metamorphosis";
   if (!valid_name(spec.name))
-    diagnostics.push_back(error(here, {}, "'" + spec.name + "' is not a HyperFun object name "
-                                             "(a letter, then letters, digits or _)"));
+    diagnostics.push_back(error(here,
+      {},
+      "'" + spec.name +
+        "' is not a HyperFun object name "
+        "(a letter, then letters, digits or _)"));
   if (spec.lattice.empty())
     diagnostics.push_back(error(here, {}, "the lattice has no axis"));
   std::size_t nodes = 1;
@@ -123,17 +131,18 @@ bool check_spec(const MorphSpec& spec, std::vector<Diagnostic>& diagnostics)
   {
     if (n < 2 || n > 64)
     {
-      diagnostics.push_back(error(here, {}, "a lattice axis needs 2 to 64 nodes (the lattice " +
-                                               lattice_text(spec.lattice) + ")"));
+      diagnostics.push_back(error(here,
+        {},
+        "a lattice axis needs 2 to 64 nodes (the lattice " + lattice_text(spec.lattice) + ")"));
       return false;
     }
     nodes *= static_cast<std::size_t>(n);
   }
   if (diagnostics.empty() && nodes != spec.keys.size())
-    diagnostics.push_back(error(here, {}, "the lattice " + lattice_text(spec.lattice) + " has " +
-                                             std::to_string(nodes) + " nodes, " +
-                                             std::to_string(spec.keys.size()) +
-                                             " keys were given"));
+    diagnostics.push_back(error(here,
+      {},
+      "the lattice " + lattice_text(spec.lattice) + " has " + std::to_string(nodes) + " nodes, " +
+        std::to_string(spec.keys.size()) + " keys were given"));
   return diagnostics.empty();
 }
 
@@ -147,15 +156,15 @@ bool check_keys(const MorphSpec& spec,
   for (const KeyObject& key : keys)
   {
     const auto describe = [](const KeyObject& k)
-    {
-      return k.name + "(x[" + std::to_string(k.x_dim) + "], a[" + std::to_string(k.a_dim) + "])";
-    };
+    { return k.name + "(x[" + std::to_string(k.x_dim) + "], a[" + std::to_string(k.a_dim) + "])"; };
     if (key.x_dim != first.x_dim || key.a_dim != first.a_dim)
-      diagnostics.push_back(error(key.file, key.at,
+      diagnostics.push_back(error(key.file,
+        key.at,
         "the key " + describe(key) + " and the key " + describe(first) + " (" + first.file +
           ") differ: every key needs the same x[] and a[] sizes"));
     if (key.s_dim != 1)
-      diagnostics.push_back(error(key.file, key.at,
+      diagnostics.push_back(error(key.file,
+        key.at,
         "the key " + key.name + " has s[" + std::to_string(key.s_dim) +
           "]: attributes are not blended yet, so a key must have s[1]"));
   }
@@ -166,7 +175,8 @@ bool check_keys(const MorphSpec& spec,
     {
       const auto [it, fresh] = owner.emplace(file.objects[i], file.path);
       if (!fresh)
-        diagnostics.push_back(error(file.path, file.places[i],
+        diagnostics.push_back(error(file.path,
+          file.places[i],
           "the object '" + file.objects[i] + "' is defined in " + it->second +
             " too: the key files' objects need different names"));
     }
@@ -174,7 +184,8 @@ bool check_keys(const MorphSpec& spec,
   for (const std::string& written : { lower(spec.name), std::string("my_model") })
   {
     if (const auto it = owner.find(written); it != owner.end())
-      diagnostics.push_back(error(it->second, {},
+      diagnostics.push_back(error(it->second,
+        {},
         "the key file defines '" + written +
           "', an object the metamorphosis writes: rename it, or name the metamorphosis otherwise"));
   }
@@ -195,13 +206,14 @@ std::string header(const MorphSpec& spec,
 {
   const std::size_t axes = spec.lattice.size();
   std::string out =
-    comment(" Metamorphosis written by FRepKit (frepkit morph): " + std::to_string(keys.size()) +
-            " keys on a " + lattice_text(spec.lattice) + " lattice, " +
-            std::string(interpolation_name(spec.scheme)) + " weights" +
-            (spec.alignment == Alignment::None ? std::string()
-             : spec.alignment == Alignment::Centroid ? ", keys aligned by their centroids"
-                                                     : ", keys aligned by their centroids and sizes") +
-            ".") +
+    comment(
+      " Metamorphosis written by FRepKit (frepkit morph): " + std::to_string(keys.size()) +
+      " keys on a " + lattice_text(spec.lattice) + " lattice, " +
+      std::string(interpolation_name(spec.scheme)) + " weights" +
+      (spec.alignment == Alignment::None        ? std::string()
+        : spec.alignment == Alignment::Centroid ? ", keys aligned by their centroids"
+                                                : ", keys aligned by their centroids and sizes") +
+      ".") +
     comment(" x[1.." + std::to_string(d) + "]: the keys' coordinates; x[" + std::to_string(d + 1) +
             "]" + (axes > 1 ? "..x[" + std::to_string(d + static_cast<int>(axes)) + "]" : "") +
             ": the lattice's parameters, each over [0, 1] (clamped); node i of n at i/(n-1).") +
@@ -214,6 +226,14 @@ std::string header(const MorphSpec& spec,
       line += " x[" + std::to_string(d + 1 + static_cast<int>(a)) +
               "] = " + weight_text::node_value(nodes[a], spec.lattice[a]);
     out += comment(line + ": " + keys[k].name + " (" + keys[k].file + ")");
+  }
+  if (spec.normalisation == Normalisation::Distance)
+  {
+    out += comment(
+      " Keys normalised by distance: each key's F plus, beyond a band about its surface and on");
+    out += comment(
+      " its own side, its signed distance mdist_KEY(x), sampled (frepkit morph writes each as");
+    out += comment(" STEM-KEY-distance.vti: load this with --shape mdist_KEY=that file).");
   }
   if (placement == KeyPlacement::Library)
   {
@@ -259,14 +279,18 @@ std::string pasted_keys(const std::vector<KeyFile>& files, std::vector<Diagnosti
   return out;
 }
 
-// Each key's frame (centroid, size), measured once per distinct key object.
-bool measure_frames(const MorphSpec& spec,
+// What `measure` says of each key's compiled tape, measured once per distinct key object; a
+// failure (its message) becomes a diagnostic "the key's <what>: ...".
+template<typename Result, typename Measure>
+bool measure_keys(const MorphSpec& spec,
   const std::vector<KeyFile>& files,
   const LoadOptions& key_options,
-  std::vector<KeyFrame>& frames,
+  const std::string& what,
+  Measure measure,
+  std::vector<Result>& results,
   std::vector<Diagnostic>& diagnostics)
 {
-  std::map<std::pair<std::string, std::string>, KeyFrame> measured;
+  std::map<std::pair<std::string, std::string>, Result> measured;
   for (const Key& key : spec.keys)
   {
     const auto id = std::make_pair(key.file, lower(key.object));
@@ -278,15 +302,45 @@ bool measure_frames(const MorphSpec& spec,
       LoadOptions options = key_options; // its compile options
       options.object = key.object;
       const LoadedModel loaded = compile_object(file->program, options);
-      KeyFrame frame = loaded.ok() ? measure_key_frame(loaded.model->tape(), spec.frame_samples)
-                                   : KeyFrame{ {}, 0.0, 0, loaded.message() };
-      if (!frame.ok())
-        diagnostics.push_back(error(key.file, {}, "the key's centroid and size: " + frame.error));
-      found = measured.emplace(id, std::move(frame)).first;
+      Result result;
+      if (loaded.ok())
+        result = measure(loaded.model->tape());
+      else
+        result.error = loaded.message();
+      if (!result.ok())
+        diagnostics.push_back(error(key.file, {}, "the key's " + what + ": " + result.error));
+      found = measured.emplace(id, std::move(result)).first;
     }
-    frames.push_back(found->second);
+    results.push_back(found->second);
   }
   return diagnostics.empty();
+}
+
+// The keys' sampled distances as the functions the text calls (one per distinct key object).
+void add_distances(const std::vector<KeyObject>& keys,
+  const std::vector<KeyDistance>& distances,
+  MorphText& result,
+  std::vector<weight_text::KeyNormal>& normals)
+{
+  auto registry = std::make_shared<UserFunctionRegistry>();
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    const std::string function = "mdist_" + keys[k].name;
+    normals.push_back({ function, distances[k].band });
+    if (registry->find(function))
+      continue;
+    auto field = shapes::VolumeField::build(distances[k].grid, 0.0);
+    if (!field.field)
+    {
+      result.diagnostics.push_back(error(keys[k].file, {}, "the key's distance: " + field.error));
+      continue;
+    }
+    const std::string added = registry->add(shapes::volume_function(function, field.field));
+    if (!added.empty())
+      result.diagnostics.push_back(error(keys[k].file, {}, added));
+    result.distances.push_back({ function, keys[k].name, distances[k].grid });
+  }
+  result.functions = std::move(registry);
 }
 
 } // namespace
@@ -303,8 +357,32 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
     return result;
   std::vector<KeyFrame> frames;
   if (spec.alignment != Alignment::None &&
-      !measure_frames(spec, files, key_options, frames, result.diagnostics))
+      !measure_keys(
+        spec,
+        files,
+        key_options,
+        "centroid and size",
+        [&](const auto& tape) { return measure_key_frame(tape, spec.frame_samples); },
+        frames,
+        result.diagnostics))
     return result;
+  std::vector<KeyDistance> distances;
+  std::vector<weight_text::KeyNormal> normals;
+  if (spec.normalisation == Normalisation::Distance)
+  {
+    if (!measure_keys(
+          spec,
+          files,
+          key_options,
+          "distance",
+          [&](const auto& tape) { return measure_key_distance(tape, spec.distance_samples); },
+          distances,
+          result.diagnostics))
+      return result;
+    add_distances(keys, distances, result, normals);
+    if (!result.ok())
+      return result;
+  }
   const int d = keys.front().x_dim;
   const int a_dim = keys.front().a_dim;
   result.x_dim = d + static_cast<int>(spec.lattice.size());
@@ -325,14 +403,17 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
       result.libraries.push_back(file.path);
   }
   const std::string name = lower(spec.name);
-  const std::string head = "(x[" + std::to_string(result.x_dim) + "], a[" + std::to_string(a_dim) + "])";
+  const std::string head =
+    "(x[" + std::to_string(result.x_dim) + "], a[" + std::to_string(a_dim) + "])";
   text += "-- the metamorphosis\n" + name + head + "\n{\n" +
-          weight_text::body(name, d, spec.lattice, spec.scheme, key_names, spec.alignment, frames) +
+          weight_text::body(
+            name, d, spec.lattice, spec.scheme, key_names, spec.alignment, frames, normals) +
           "}\n";
   if (name != "my_model")
   {
     text += "\n-- the default object (hfp and frepkit evaluate my_model when no object is named)\n"
-            "my_model" + head + "\n{\n  my_model = " + name + "(x, a);\n}\n";
+            "my_model" +
+            head + "\n{\n  my_model = " + name + "(x, a);\n}\n";
   }
   result.text = std::move(text);
   return result;

@@ -21,6 +21,7 @@
 
 #include "Compiler/load_model.h"
 #include "Language/diagnostic.h"
+#include "Morph/key_distance.h"
 #include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
 
@@ -32,8 +33,9 @@ namespace frep::morph
 
 struct Key
 {
-  std::string file;   ///< a HyperFun model file
-  std::string object; ///< its object (any case); empty: the file's default (my_model, else the first)
+  std::string file; ///< a HyperFun model file
+  std::string
+    object; ///< its object (any case); empty: the file's default (my_model, else the first)
 };
 
 struct MorphSpec
@@ -49,6 +51,12 @@ struct MorphSpec
   /// measured on `frame_samples`^d points of each key. The corners stay the keys exactly.
   Alignment alignment = Alignment::None;
   int frame_samples = 48;
+  /// Keys' values made comparable (key_distance.h): with Distance, beyond a band of two cells
+  /// about its surface each key gains its signed distance sampled on `distance_samples`^3
+  /// points, on its own side only (the key's sign, zero set and topology are kept exactly;
+  /// values at the corners are the normalised key's, no longer the raw key's).
+  Normalisation normalisation = Normalisation::None;
+  int distance_samples = 96;
   /// The object written (a HyperFun name: a letter, then letters, digits, _). Unless it is
   /// my_model, a my_model equal to it follows, so it is the file's default object.
   std::string name = "morph";
@@ -60,12 +68,25 @@ enum class KeyPlacement
   Pasted
 };
 
+/// A key's sampled distance, as the text calls it: `function`(x) over x[1..3].
+struct DistanceVolume
+{
+  std::string function; ///< "mdist_" + the key's object name
+  std::string key;      ///< the key's object name
+  shapes::VolumeGrid grid;
+};
+
 struct MorphText
 {
   std::string text; ///< empty when diagnostics say why
   /// Library placement: the key files, in first-use order, for LoadOptions::libraries.
   std::vector<std::string> libraries;
   int x_dim = 0; ///< of the object written: the keys' plus the lattice's axes
+  /// Normalisation::Distance: the keys' distances the text calls, and the same as functions to
+  /// load it with (LoadOptions::functions, merged with any others). A file written from `text`
+  /// needs them again when loaded: frepkit morph writes each grid as a .vti beside it.
+  std::vector<DistanceVolume> distances;
+  std::shared_ptr<const UserFunctionRegistry> functions;
   std::vector<Diagnostic> diagnostics;
   bool ok() const { return diagnostics.empty(); }
 };

@@ -67,6 +67,31 @@ for scheme in catmull-rom b-spline; do
   fi
 done
 
+# Normalised by distance: the distances written beside the model as .vti; loaded again with the
+# --shape arguments frepkit prints, the corners keep the keys' signs (the zero sets) exactly.
+if run "morph --normalise distance" 0 "$frepkit" morph cat.hf nihon.hf --normalise distance --paste \
+  -o "$work/nd.hf"; then
+  for k in cat nihon; do
+    [ -s "$work/nd-$k-distance.vti" ] && pass "nd-$k-distance.vti written" || fail "nd-$k-distance.vti missing"
+  done
+  expect_in "the shapes to load it with" "$err" "--shape mdist_cat=$work/nd-cat-distance.vti --shape mdist_nihon=$work/nd-nihon-distance.vti"
+  awk 'BEGIN { srand(5); for (i = 0; i < 400; i++) print -9 + 18 * rand(), -9 + 18 * rand(), -9 + 18 * rand() }' > "$work/p3.txt"
+  for corner in "cat 0" "nihon 1"; do
+    set -- $corner
+    awk -v t="$2" '{ print $0, t }' "$work/p3.txt" > "$work/p4.txt"
+    blend=$("$frepkit" eval "$work/nd.hf" -p "$work/p4.txt" --shape "mdist_cat=$work/nd-cat-distance.vti" \
+      --shape "mdist_nihon=$work/nd-nihon-distance.vti" | awk '{ print ($1 >= 0) }')
+    own=$("$frepkit" eval "$1.hf" -o "$1" -p "$work/p3.txt" | awk '{ print ($1 >= 0) }')
+    if [ "$(echo "$blend" | wc -l)" -eq 400 ] && [ "$blend" == "$own" ]; then
+      pass "normalised, x4 = $2 is inside exactly where $1 is (400 points)"
+    else
+      fail "normalised, x4 = $2: the sides differ from $1's"
+    fi
+  done
+fi
+run "distances need a file" 1 "$frepkit" morph cat.hf nihon.hf --normalise distance -o -
+expect_in "distances to stdout refused" "$err" "give -o FILE"
+
 echo "keep me" > "$work/kept.hf"
 run "lattice that does not match" 1 "$frepkit" morph "${keys[@]}" --lattice 3x2 -o "$work/kept.hf"
 expect_in "lattice message" "$err" "the lattice 3 x 2 has 6 nodes, 4 keys were given"

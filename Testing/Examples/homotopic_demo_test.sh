@@ -81,5 +81,20 @@ for key in "cat 0 0" "robot 1 0" "nihon 0 1" "roblet 1 1"; do
   if [ -n "$own" ] && [ "$blend" == "$own" ]; then pass "meta5d.hf at ($2, $3) is $1.hf exactly"; else fail "meta5d.hf at ($2, $3): '$blend' vs $1.hf '$own'"; fi
 done
 
+# Normalised by distance (small and meshed, to stay quick): the keys' distance volumes are
+# written beside meta5d.hf and named in the manifest; with them meta5d.hf loads again and its
+# corners are inside exactly where the keys are.
+run "demo --normalise distance" 0 "$frepkit" demo homotopic -O nd --frames 2 --resolution 16 \
+  --mesh-grid 16 --method mesh --normalise distance -q
+shapes=$(/usr/bin/python3 -c "import json; m = json.load(open('nd/manifest.json'))['morph']; print(m['normalisation'], ' '.join('--shape %s=nd/%s' % kv for kv in sorted(m['shapes'].items())))")
+expect_in "manifest names the distances" "$shapes" "distance --shape mdist_cat=nd/meta5d-cat-distance.vti"
+for key in "cat 0 0" "roblet 1 1"; do
+  set -- $key
+  awk 'BEGIN { srand(7); for (i = 0; i < 200; i++) print -9 + 18 * rand(), -9 + 18 * rand(), -9 + 18 * rand() }' > p3.txt
+  blend=$(awk -v a="$2" -v b="$3" '{ print $0, a, b }' p3.txt | "$frepkit" eval nd/meta5d.hf -o meta5d ${shapes#distance } | awk '{ print ($1 >= 0) }')
+  own=$("$frepkit" eval "$examples/$1.hf" -o "$1" -p p3.txt | awk '{ print ($1 >= 0) }')
+  if [ "$(echo "$blend" | wc -l)" -eq 200 ] && [ "$blend" == "$own" ]; then pass "normalised meta5d.hf at ($2, $3) is inside where $1.hf is"; else fail "normalised meta5d.hf at ($2, $3): sides differ from $1.hf"; fi
+done
+
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

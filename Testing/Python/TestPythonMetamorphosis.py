@@ -7,6 +7,8 @@
   values at 2000 points equal meta5d.hf's meta5d (frepkit.load + frepkit.evaluate), bit for bit;
 - aligned by size (SetAlignment(ALIGN_SIZE)): the lattice's corners are still the keys exactly,
   and the middle differs;
+- normalised by distance (SetNormalisation(NORMALISE_DISTANCE)): at the corners every point is
+  on the key's side (the zero sets kept) and the values differ from the keys' (the distances);
 - a lattice that does not match the keys: frepkit.update raises FRepError with the engine's
   message.
 Exits 1 on any failed check."""
@@ -43,7 +45,7 @@ check(blend.GetDimension() == 5, "2 x 2 lattice of 3-D keys: a 5-D object (%d)" 
 paper = frepkit.load(file=os.path.join(homotopic, "meta5d.hf"), object="meta5d")
 rng = numpy.random.default_rng(29)
 points = numpy.column_stack([rng.uniform(-10, 10, (2000, 3)), rng.uniform(0, 1, (2000, 2))])
-points[:4, 3:] = [[0, 0], [1, 0], [0, 1], [1, 1]]
+points[:400, 3:] = rng.integers(0, 2, (400, 2))  # 400 points at the corners (the keys)
 ours, theirs = frepkit.evaluate(blend, points), frepkit.evaluate(paper, points)
 check(numpy.array_equal(ours, theirs), "the morph equals meta5d.hf at 2000 points, bit for bit")
 
@@ -54,6 +56,14 @@ corners = numpy.isin(points[:, 3], (0.0, 1.0)) & numpy.isin(points[:, 4], (0.0, 
 check(numpy.array_equal(values[corners], theirs[corners]),
       "aligned by size, the corners are the keys (%d points)" % corners.sum())
 check(not numpy.array_equal(values[~corners], theirs[~corners]), "aligned, the middle differs")
+
+normalised = morph()
+normalised.SetNormalisation(vtkFRepMetamorphosis.NORMALISE_DISTANCE)
+frepkit.update(normalised)
+values = frepkit.evaluate(normalised.GetOutput(), points)
+check(numpy.array_equal(values[corners] >= 0, theirs[corners] >= 0),
+      "normalised by distance, the corners are inside exactly where the keys are (%d points)" % corners.sum())
+check(not numpy.array_equal(values[corners], theirs[corners]), "normalised, the corners' values change")
 
 bad = morph(axes=(3,))
 try:

@@ -79,8 +79,8 @@ std::string span_basis(int c, int n, int span, int depth)
     out += in + saved + " = 0;\n";
     for (int r = 0; r < j; ++r)
     {
-      out += in + q + " = " + v("mb", c, r) + "/(" + v("mr", c, r + 1) + " + " +
-             v("ml", c, j - r) + ");\n";
+      out += in + q + " = " + v("mb", c, r) + "/(" + v("mr", c, r + 1) + " + " + v("ml", c, j - r) +
+             ");\n";
       out += in + v("mb", c, r) + " = " + saved + " + " + v("mr", c, r + 1) + "*" + q + ";\n";
       out += in + saved + " = " + v("ml", c, j - r) + "*" + q + ";\n";
     }
@@ -93,7 +93,7 @@ std::string span_basis(int c, int n, int span, int depth)
 
 // The chain "if <first test> then <first> else if ... else <last> endif; ...": `count` pieces,
 // piece i chosen by test(i) (the last one needs none).
-template <typename Test, typename Piece>
+template<typename Test, typename Piece>
 std::string chain(int count, int depth, const Test& test, const Piece& piece)
 {
   std::string out;
@@ -114,12 +114,17 @@ std::string interior(int c, int n, Interpolation scheme, int depth)
   {
     const int p = std::min(3, n - 1);
     return chain(
-      n - p, depth, [&](int i) { return v("mt", c) + " < " + knot(p + i + 1, n, p); },
+      n - p,
+      depth,
+      [&](int i) { return v("mt", c) + " < " + knot(p + i + 1, n, p); },
       [&](int i, int at) { return span_basis(c, n, p + i, at); });
   }
-  std::string out = indent(depth) + v("ms", c) + " = " + v("mt", c) + "*" + std::to_string(n - 1) + ";\n";
+  std::string out =
+    indent(depth) + v("ms", c) + " = " + v("mt", c) + "*" + std::to_string(n - 1) + ";\n";
   return out + chain(
-                 n - 1, depth, [&](int i) { return v("ms", c) + " < " + std::to_string(i + 1); },
+                 n - 1,
+                 depth,
+                 [&](int i) { return v("ms", c) + " < " + std::to_string(i + 1); },
                  [&](int i, int at) { return segment(c, n, i, scheme, at); });
 }
 
@@ -134,7 +139,8 @@ std::string blend(int a, std::size_t offset, int d, const std::vector<int>& latt
   std::string out;
   for (int i = 0; i < lattice[static_cast<std::size_t>(a)]; ++i)
   {
-    const std::string part = blend(a - 1, offset + static_cast<std::size_t>(i) * stride, d, lattice);
+    const std::string part =
+      blend(a - 1, offset + static_cast<std::size_t>(i) * stride, d, lattice);
     out += (i ? " + " : "") + (a == 0 ? part : "(" + part + ")") + "*" + v("mw", d + 1 + a, i);
   }
   return out;
@@ -181,12 +187,14 @@ std::string frame_statements(int d,
   {
     std::string sum;
     for (std::size_t k = 0; k < frames.size(); ++k)
-      sum += (k ? " + " : "") + std::string("mW") + std::to_string(k) + "*" + literal(of(frames[k]));
+      sum +=
+        (k ? " + " : "") + std::string("mW") + std::to_string(k) + "*" + literal(of(frames[k]));
     return sum;
   };
   for (int i = 0; i < d; ++i)
     out += "  mc" + std::to_string(i + 1) + " = " +
-           blended([i](const KeyFrame& f) { return f.centroid[static_cast<std::size_t>(i)]; }) + ";\n";
+           blended([i](const KeyFrame& f) { return f.centroid[static_cast<std::size_t>(i)]; }) +
+           ";\n";
   if (alignment == Alignment::CentroidAndSize)
     out += "  msz = " + blended([](const KeyFrame& f) { return f.size; }) + ";\n";
   for (std::size_t k = 0; k < frames.size(); ++k)
@@ -199,14 +207,31 @@ std::string frame_statements(int d,
     for (int i = 1; i <= d; ++i)
     {
       const std::string c = literal(frames[k].centroid[static_cast<std::size_t>(i - 1)]);
-      out += "    " + my + "[" + std::to_string(i) + "] = " + c + " + (x[" + std::to_string(i) +
-             "] - mc" + std::to_string(i) + ")" +
-             (alignment == Alignment::CentroidAndSize ? "*(" + literal(frames[k].size) + "/msz)" : "") +
-             ";\n";
+      out +=
+        "    " + my + "[" + std::to_string(i) + "] = " + c + " + (x[" + std::to_string(i) +
+        "] - mc" + std::to_string(i) + ")" +
+        (alignment == Alignment::CentroidAndSize ? "*(" + literal(frames[k].size) + "/msz)" : "") +
+        ";\n";
     }
     out += "  endif;\n";
   }
   return out;
+}
+
+// Key k's value normalised by distance: F, plus the sampled distance beyond the band on F's own
+// side, so the sign (F >= 0 or not) is F's exactly: inside, F + max(D - band, 0) >= F >= 0;
+// outside, F + min(D + band, 0) <= F < 0.
+std::string normalised_call(std::size_t k,
+  const std::string& key,
+  const std::string& point,
+  const KeyNormal& normal)
+{
+  const std::string mk = "mk" + std::to_string(k), md = "md" + std::to_string(k);
+  const std::string band = literal(normal.band);
+  return "    " + mk + " = " + key + "(" + point + ", a);\n    " + md + " = " + normal.function +
+         "(" + point + ");\n    if " + mk + " >= 0 then\n      " + mk + " = " + mk + " + max(" +
+         md + " - " + band + ", 0);\n    else\n      " + mk + " = " + mk + " + min(" + md + " + " +
+         band + ", 0);\n    endif;\n";
 }
 
 } // namespace
@@ -251,7 +276,8 @@ std::string body(const std::string& name,
   Interpolation scheme,
   const std::vector<std::string>& keys,
   Alignment alignment,
-  const std::vector<KeyFrame>& frames)
+  const std::vector<KeyFrame>& frames,
+  const std::vector<KeyNormal>& normals)
 {
   const bool aligned = alignment != Alignment::None && frames.size() == keys.size();
   std::string out = "  array mx[" + std::to_string(d) + "]";
@@ -268,15 +294,23 @@ std::string body(const std::string& name,
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     // Exact tests: HyperFun's /= has a tolerance of 1e-6.
-    const std::string test = key_weights(k, d, lattice, " and ",
+    const std::string test = key_weights(k,
+      d,
+      lattice,
+      " and ",
       [](const std::string& w) { return "(" + w + " < 0 or " + w + " > 0)"; });
     const std::string mk = "mk" + std::to_string(k);
     const std::string point = aligned ? "my" + std::to_string(k) : std::string("mx");
     const std::string scale = aligned && alignment == Alignment::CentroidAndSize
                                 ? "*(msz/" + literal(frames[k].size) + ")"
                                 : std::string();
-    out += "  " + mk + " = 0;\n  if " + test + " then\n    " + mk + " = " + keys[k] + "(" + point +
-           ", a)" + scale + ";\n  endif;\n";
+    out += "  " + mk + " = 0;\n  if " + test + " then\n";
+    if (normals.size() == keys.size())
+      out += normalised_call(k, keys[k], point, normals[k]) +
+             (scale.empty() ? std::string() : "    " + mk + " = " + mk + scale + ";\n");
+    else
+      out += "    " + mk + " = " + keys[k] + "(" + point + ", a)" + scale + ";\n";
+    out += "  endif;\n";
   }
   out += "  " + name + " = " + blend(static_cast<int>(lattice.size()) - 1, 0, d, lattice) + ";\n";
   return out;

@@ -13,6 +13,14 @@
 namespace frep::morph::weight_text
 {
 
+/// A key's normalisation by distance (key_distance.h): the function the text calls and the band
+/// within which the key's own F is kept.
+struct KeyNormal
+{
+  std::string function;
+  double band = 0.0;
+};
+
 /// Key k's node on each lattice axis (the first axis fastest: k = i_0 + n_0 (i_1 + ...)).
 std::vector<int> lattice_indices(std::size_t k, const std::vector<int>& lattice);
 
@@ -25,13 +33,15 @@ std::string axis_statements(int c, int n, Interpolation scheme);
 
 /// The object's body between its braces: the local copy of x[1..d], every axis's weights, with
 /// an alignment the moving frame and each key's point in it (`frames`: one per key, measured),
-/// the keys' calls (lattice order) and the final `name = blend;`.
+/// the keys' calls (lattice order; with `normals`, one per key, each normalised by distance)
+/// and the final `name = blend;`.
 std::string body(const std::string& name,
   int d,
   const std::vector<int>& lattice,
   Interpolation scheme,
   const std::vector<std::string>& keys,
   Alignment alignment = Alignment::None,
-  const std::vector<KeyFrame>& frames = {});
+  const std::vector<KeyFrame>& frames = {},
+  const std::vector<KeyNormal>& normals = {});
 
 } // namespace frep::morph::weight_text

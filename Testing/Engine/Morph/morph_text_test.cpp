@@ -32,8 +32,8 @@ const std::string kHomotopic = std::string(FREPKIT_SOURCE_DIR) + "/Examples/homo
 // A scratch folder of key files, removed at the end.
 struct KeyFolder
 {
-  fs::path dir = fs::temp_directory_path() /
-                 ("frep_morph_test_" + std::to_string(std::random_device{}()));
+  fs::path dir =
+    fs::temp_directory_path() / ("frep_morph_test_" + std::to_string(std::random_device{}()));
   KeyFolder() { fs::create_directories(dir); }
   ~KeyFolder() { fs::remove_all(dir); }
   std::string write(const std::string& name, const std::string& text) const
@@ -49,6 +49,7 @@ std::shared_ptr<const frep::Model> load(const frep::morph::MorphText& morph,
   EXPECT_TRUE(morph.ok()) << frep::format_diagnostics(morph.diagnostics);
   frep::LoadOptions options;
   options.libraries = morph.libraries;
+  options.functions = morph.functions; // the keys' distances, when normalised
   options.object = object;
   const frep::LoadedModel loaded =
     frep::load_model(frep::ModelSource::from_text(morph.text, "morph.hf"), options);
@@ -76,9 +77,10 @@ MorphSpec constant_keys(const KeyFolder& folder, const std::vector<int>& lattice
   for (std::size_t k = 0; k < count; ++k)
   {
     const std::string name = "key" + std::to_string(k);
-    spec.keys.push_back({ folder.write(name + ".hf", name + "(x[2], a[1]) { " + name + " = " +
-                                                       std::to_string(k + 1) + "; }\n"),
-      "" });
+    spec.keys.push_back(
+      { folder.write(
+          name + ".hf", name + "(x[2], a[1]) { " + name + " = " + std::to_string(k + 1) + "; }\n"),
+        "" });
   }
   return spec;
 }
@@ -109,7 +111,9 @@ TEST(MorphText, LinearTwoByTwoIsThePapersMeta5DBitForBit)
     std::uniform_real_distribution<double> space(-10, 10), time(0, 1);
     for (int i = 0; i < 3000; ++i)
     {
-      std::vector<double> x{ space(random), space(random), space(random), time(random), time(random) };
+      std::vector<double> x{
+        space(random), space(random), space(random), time(random), time(random)
+      };
       if (i < 16) // the corners and edges of the lattice, where weights are exactly 0 and 1
       {
         x[3] = (i & 1) ? 1.0 : (i & 4) ? 0.5 : 0.0;
@@ -170,9 +174,9 @@ TEST(MorphText, PastedLoadsAloneAndAFixedCellKeepsOnlyItsKeys)
   for (std::size_t k = 0; k < spec.keys.size(); ++k)
   {
     const std::string name = "key" + std::to_string(k);
-    spec.keys[k].file = folder.write(name + ".hf", name + "(x[2], a[1]) { " + name + " = " +
-                                                     std::to_string(k + 1) +
-                                                     " - x[1]*x[1] - x[2]*x[2]; }\n");
+    spec.keys[k].file = folder.write(name + ".hf",
+      name + "(x[2], a[1]) { " + name + " = " + std::to_string(k + 1) +
+        " - x[1]*x[1] - x[2]*x[2]; }\n");
   }
   const frep::morph::MorphText pasted = frep::morph::write_morph(spec, KeyPlacement::Pasted);
   ASSERT_TRUE(pasted.ok());
@@ -208,7 +212,8 @@ TEST(MorphText, BadRequestsAreDiagnostics)
   MorphSpec spec;
   spec.keys = { { ball, "" }, { ball, "" }, { ball, "" } };
   spec.lattice = { 2, 2 };
-  EXPECT_NE(message(spec).find("the lattice 2 x 2 has 4 nodes, 3 keys were given"), std::string::npos);
+  EXPECT_NE(
+    message(spec).find("the lattice 2 x 2 has 4 nodes, 3 keys were given"), std::string::npos);
   spec.lattice = { 3, 1 };
   EXPECT_NE(message(spec).find("2 to 64 nodes"), std::string::npos);
   spec.keys = { { ball, "" }, { disc, "" } };
@@ -242,7 +247,8 @@ TEST(MorphText, AlignedBallsTravelAndGrowIntoOneBall)
   spec.keys = { { folder.write("small.hf",
                     "small(x[3], a[1]) { small = 1 - (x[1] + 3)^2 - x[2]^2 - x[3]^2; }\n"),
                   "" },
-    { folder.write("large.hf", "large(x[3], a[1]) { large = 4 - (x[1] - 3)^2 - x[2]^2 - x[3]^2; }\n"),
+    { folder.write(
+        "large.hf", "large(x[3], a[1]) { large = 4 - (x[1] - 3)^2 - x[2]^2 - x[3]^2; }\n"),
       "" } };
   spec.lattice = { 2 };
   spec.alignment = frep::morph::Alignment::CentroidAndSize;
@@ -280,8 +286,9 @@ TEST(MorphText, AlignedBallsTravelAndGrowIntoOneBall)
 
 TEST(MorphText, KeyFrameIsTheSolidsCentroidAndSize)
 {
-  const auto ball = frep::load_model(frep::ModelSource::from_text(
-    "b(x[3], a[1]) { b = 4 - (x[1] - 1)^2 - (x[2] + 2)^2 - x[3]^2; }")).model;
+  const auto ball = frep::load_model(
+    frep::ModelSource::from_text("b(x[3], a[1]) { b = 4 - (x[1] - 1)^2 - (x[2] + 2)^2 - x[3]^2; }"))
+                      .model;
   const frep::morph::KeyFrame frame = frep::morph::measure_key_frame(ball->tape(), 64);
   ASSERT_TRUE(frame.ok()) << frame.error;
   EXPECT_NEAR(frame.centroid[0], 1.0, 0.01);
@@ -292,4 +299,79 @@ TEST(MorphText, KeyFrameIsTheSolidsCentroidAndSize)
     frep::load_model(frep::ModelSource::from_text("h(x[3], a[1]) { h = x[1]; }")).model;
   EXPECT_NE(frep::morph::measure_key_frame(half_space->tape()).error.find("not bounded"),
     std::string::npos);
+}
+
+TEST(MorphText, DistanceKeepsEveryKeysSignAndAddsDepth)
+{
+  // Two of the Homotopic Fun keys (bounded values, thin whiskers and strokes) on one axis.
+  MorphSpec spec;
+  spec.keys = { { kHomotopic + "cat.hf", "cat" }, { kHomotopic + "nihon.hf", "nihon" } };
+  spec.lattice = { 2 };
+  spec.normalisation = frep::morph::Normalisation::Distance;
+  spec.distance_samples = 64;
+  const frep::morph::MorphText morph = frep::morph::write_morph(spec, KeyPlacement::Pasted);
+  ASSERT_EQ(morph.distances.size(), 2u);
+  EXPECT_EQ(morph.distances[0].function, "mdist_cat");
+  const auto model = load(morph);
+  ASSERT_TRUE(model);
+  const auto cat = frep::load_model(frep::ModelSource::file(spec.keys[0].file)).model;
+  const auto nihon = frep::load_model(frep::ModelSource::file(spec.keys[1].file)).model;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> space(-10, 10);
+  int deeper = 0, farther = 0;
+  for (int i = 0; i < 3000; ++i)
+  {
+    const double x = space(random), y = space(random), z = space(random);
+    const double c = value(*cat, { x, y, z }), n = value(*nihon, { x, y, z });
+    const double m0 = value(*model, { x, y, z, 0.0 }), m1 = value(*model, { x, y, z, 1.0 });
+    ASSERT_EQ(m0 >= 0, c >= 0) << x << " " << y << " " << z; // the zero set, exactly
+    ASSERT_EQ(m1 >= 0, n >= 0) << x << " " << y << " " << z;
+    ASSERT_TRUE(c >= 0 ? m0 >= c : m0 <= c); // the distance only ever adds on F's side
+    deeper += m0 > c + 0.5;
+    farther += m1 < n - 2.0;
+    EXPECT_TRUE(std::isfinite(value(*model, { x, y, z, 0.5 })));
+  }
+  // The bounded keys saturate at 0.3 inside and -0.15 outside; normalised, values grow with
+  // the depth and the distance.
+  EXPECT_GT(deeper, 10);
+  EXPECT_GT(farther, 1000);
+}
+
+TEST(MorphText, KeyDistanceIsTheBallsDistanceWithinACell)
+{
+  const auto ball = frep::load_model(
+    frep::ModelSource::from_text("b(x[3], a[1]) { b = 3 - sqrt((x[1] - 1)^2 + x[2]^2 + x[3]^2); }"))
+                      .model;
+  const frep::morph::KeyDistance distance = frep::morph::measure_key_distance(ball->tape(), 48);
+  ASSERT_TRUE(distance.ok()) << distance.error;
+  const auto& g = distance.grid;
+  double cell = 0.0;
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    EXPECT_EQ(g.dims[k], 48);
+    EXPECT_EQ(g.origin[k] * 1024, std::floor(g.origin[k] * 1024)); // dyadic: exact in a file
+    EXPECT_EQ(g.spacing[k] * 1024, std::floor(g.spacing[k] * 1024));
+    cell = std::max(cell, g.spacing[k]);
+  }
+  EXPECT_EQ(distance.band, 2 * cell);
+  EXPECT_LT(g.origin[0], 1 - 3.5); // the solid's bounds padded
+  double worst = 0.0;
+  for (int k = 0; k < 48; ++k)
+    for (int j = 0; j < 48; ++j)
+      for (int i = 0; i < 48; ++i)
+      {
+        const double x = g.origin[0] + i * g.spacing[0], y = g.origin[1] + j * g.spacing[1],
+                     z = g.origin[2] + k * g.spacing[2];
+        const double exact = 3 - std::sqrt((x - 1) * (x - 1) + y * y + z * z);
+        worst = std::max(
+          worst, std::abs(g.values[static_cast<std::size_t>(i + 48 * (j + 48 * k))] - exact));
+      }
+  EXPECT_LT(worst, cell);
+  const auto flat =
+    frep::load_model(frep::ModelSource::from_text("d(x[2], a[1]) { d = 1 - x[1]^2 - x[2]^2; }"))
+      .model;
+  EXPECT_NE(frep::morph::measure_key_distance(flat->tape()).error.find("3-D"), std::string::npos);
+  const auto none =
+    frep::load_model(frep::ModelSource::from_text("e(x[3], a[1]) { e = -1 - x[1]^2; }")).model;
+  EXPECT_NE(frep::morph::measure_key_distance(none->tape()).error.find("empty"), std::string::npos);
 }

@@ -15,8 +15,8 @@ VolumeField::BuildResult VolumeField::build(VolumeGrid grid, double iso)
     if (grid.dims[k] < 2)
     {
       r.error = "the volume needs at least 2 samples on each axis (it has " +
-        std::to_string(grid.dims[0]) + " x " + std::to_string(grid.dims[1]) + " x " +
-        std::to_string(grid.dims[2]) + ")";
+                std::to_string(grid.dims[0]) + " x " + std::to_string(grid.dims[1]) + " x " +
+                std::to_string(grid.dims[2]) + ")";
       return r;
     }
     if (!(grid.spacing[k] > 0) || !std::isfinite(grid.spacing[k]) || !std::isfinite(grid.origin[k]))
@@ -29,7 +29,7 @@ VolumeField::BuildResult VolumeField::build(VolumeGrid grid, double iso)
   if (grid.values.size() != n)
   {
     r.error = "the volume has " + std::to_string(grid.values.size()) + " values for " +
-      std::to_string(n) + " samples";
+              std::to_string(n) + " samples";
     return r;
   }
   const std::size_t bad = static_cast<std::size_t>(std::count_if(
@@ -98,7 +98,8 @@ double VolumeField::value(const std::array<double, 3>& p) const
   return value_and_gradient(p, g);
 }
 
-double VolumeField::value_and_gradient(const std::array<double, 3>& p, std::array<double, 3>& g) const
+double VolumeField::value_and_gradient(const std::array<double, 3>& p,
+  std::array<double, 3>& g) const
 {
   std::array<int, 3> cell{};
   std::array<double, 3> t{};
@@ -146,17 +147,22 @@ double VolumeField::value_and_gradient(const std::array<double, 3>& p, std::arra
     return v - iso_ - dist;
   }
   const double dx0 = lerp(lerp(c[1][0][0] - c[0][0][0], c[1][1][0] - c[0][1][0], t[1]),
-    lerp(c[1][0][1] - c[0][0][1], c[1][1][1] - c[0][1][1], t[1]), t[2]);
+    lerp(c[1][0][1] - c[0][0][1], c[1][1][1] - c[0][1][1], t[1]),
+    t[2]);
   const double dy0 = lerp(lerp(c[0][1][0] - c[0][0][0], c[1][1][0] - c[1][0][0], t[0]),
-    lerp(c[0][1][1] - c[0][0][1], c[1][1][1] - c[1][0][1], t[0]), t[2]);
+    lerp(c[0][1][1] - c[0][0][1], c[1][1][1] - c[1][0][1], t[0]),
+    t[2]);
   g = { dx0 / grid_.spacing[0], dy0 / grid_.spacing[1], (y1 - y0) / grid_.spacing[2] };
   return v - iso_;
 }
 
-bool VolumeField::enclose(const std::array<double, 3>& lo, const std::array<double, 3>& hi,
-  double& f_lo, double& f_hi) const
+bool VolumeField::enclose(const std::array<double, 3>& lo,
+  const std::array<double, 3>& hi,
+  double& f_lo,
+  double& f_hi) const
 {
   std::array<int, 2> range[3];
+  std::array<int, 2> cells[3]; // the cells the box covers (clamped to the grid)
   double dmin2 = 0;
   double dmax2 = 0;
   for (int k = 0; k < 3; ++k)
@@ -178,18 +184,37 @@ bool VolumeField::enclose(const std::array<double, 3>& lo, const std::array<doub
     const int c0 = std::min(static_cast<int>(ca), grid_.dims[k] - 2);
     const int c1 = std::min(static_cast<int>(cb), grid_.dims[k] - 2);
     range[k] = { c0 / kBrick, c1 / kBrick };
+    cells[k] = { c0, c1 };
   }
   double vmin = INFINITY;
   double vmax = -INFINITY;
-  for (int bk = range[2][0]; bk <= range[2][1]; ++bk)
+  // A small box (the ray caster's and the mesher's are): the covered cells' own corner samples,
+  // far tighter than whole bricks; the bricks for large boxes.
+  const auto corners = [&](int k) { return cells[k][1] - cells[k][0] + 2; };
+  if (corners(0) * corners(1) * corners(2) <= 4 * kBrick * kBrick)
   {
-    for (int bj = range[1][0]; bj <= range[1][1]; ++bj)
+    for (int k = cells[2][0]; k <= cells[2][1] + 1; ++k)
+      for (int j = cells[1][0]; j <= cells[1][1] + 1; ++j)
+        for (int i = cells[0][0]; i <= cells[0][1] + 1; ++i)
+        {
+          const double v = sample(i, j, k);
+          vmin = std::min(vmin, v);
+          vmax = std::max(vmax, v);
+        }
+  }
+  else
+  {
+    for (int bk = range[2][0]; bk <= range[2][1]; ++bk)
     {
-      for (int bi = range[0][0]; bi <= range[0][1]; ++bi)
+      for (int bj = range[1][0]; bj <= range[1][1]; ++bj)
       {
-        const std::size_t index = (static_cast<std::size_t>(bk) * bricks_[1] + bj) * bricks_[0] + bi;
-        vmin = std::min(vmin, brick_min_[index]);
-        vmax = std::max(vmax, brick_max_[index]);
+        for (int bi = range[0][0]; bi <= range[0][1]; ++bi)
+        {
+          const std::size_t index =
+            (static_cast<std::size_t>(bk) * bricks_[1] + bj) * bricks_[0] + bi;
+          vmin = std::min(vmin, brick_min_[index]);
+          vmax = std::max(vmax, brick_max_[index]);
+        }
       }
     }
   }

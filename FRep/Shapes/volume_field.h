@@ -1,6 +1,7 @@
 // A sampled scalar volume (CT, simulation output) as an FRep: F = trilinear(v) - iso inside
 // the grid, minus the distance to the grid outside it (so the object is bounded whatever the
-// border values), with enclosures over boxes from the min/max of 8^3-cell bricks.
+// border values), with enclosures over boxes from the min/max of the covered cells' samples (a
+// box of at most 256 such samples) or of 8^3-cell bricks (larger boxes).
 #pragma once
 
 #include <array>

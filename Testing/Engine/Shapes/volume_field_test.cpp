@@ -1,5 +1,6 @@
 // VolumeField: trilinear values (exact for a linear field), the distance outside the grid,
-// enclosures from the bricks that hold and cull, and refused volumes.
+// enclosures that hold and cull (a small box's from its own cells, a large one's from the
+// bricks), and refused volumes.
 #include "Shapes/volume_field.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +75,30 @@ TEST(VolumeField, EnclosuresHoldAndCull)
       ASSERT_GE(hi, v);
     }
   }
+}
+
+TEST(VolumeField, SmallBoxesAreEnclosedByTheirOwnCells)
+{
+  // v = x on a 65^3 grid of spacing 1/16: a box inside one cell is enclosed by that cell's
+  // corners (width one cell), not by its 8^3-cell brick (width eight cells).
+  VolumeGrid g;
+  g.dims = { 65, 65, 65 };
+  g.spacing = { 1.0 / 16, 1.0 / 16, 1.0 / 16 };
+  for (int k = 0; k < 65; ++k)
+    for (int j = 0; j < 65; ++j)
+      for (int i = 0; i < 65; ++i)
+        g.values.push_back(i / 16.0);
+  const auto f = VolumeField::build(g, 0.0);
+  ASSERT_TRUE(f.field) << f.error;
+  double lo = 0, hi = 0;
+  ASSERT_TRUE(f.field->enclose({ 1.52, 0.5, 0.5 }, { 1.55, 0.55, 0.55 }, lo, hi));
+  EXPECT_LE(lo, 1.52);
+  EXPECT_GE(hi, 1.55);
+  EXPECT_LT(hi - lo, 1.0 / 16 + 1e-9);
+  // A large box still holds (the bricks).
+  ASSERT_TRUE(f.field->enclose({ 0.1, 0.1, 0.1 }, { 3.9, 3.9, 3.9 }, lo, hi));
+  EXPECT_LE(lo, 0.1);
+  EXPECT_GE(hi, 3.9);
 }
 
 TEST(VolumeField, BadVolumesAreRefused)

@@ -178,6 +178,7 @@ int run_demo(const DemoOptions& options)
   const frep::morph::MorphSpec morph = meta5d_spec(examples,
     *frep::morph::alignment_from_name(options.align),
     *frep::morph::normalisation_from_name(options.normalise));
+  require_normalisation_files(morph.normalisation);
   const fs::path model = out / "meta5d.hf";
   MapOptions map;
   map.user.shapes = write_meta5d(morph, model);

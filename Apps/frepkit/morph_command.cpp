@@ -4,6 +4,7 @@
 #include "Morph/morph_text.h"
 #include "model_loading.h"
 #include "section_writers/vti_writer.h"
+#include "vtk_shape_reader.h"
 #include "user_error.h"
 
 #include <CLI/CLI.hpp>
@@ -58,6 +59,15 @@ std::vector<int> parse_lattice(const std::string& text, std::size_t keys)
 }
 
 } // namespace
+
+void require_normalisation_files(frep::morph::Normalisation normalisation)
+{
+  if (normalisation == frep::morph::Normalisation::Distance && !vtk_shapes_available())
+  {
+    throw UserError("--normalise distance needs a frepkit built with VTK (the keys' distances "
+                    "are written and read as .vti volumes; FREPKIT_ENABLE_VTK is off)");
+  }
+}
 
 std::vector<std::string> write_distances(const frep::morph::MorphText& morph,
   const std::string& model)
@@ -150,6 +160,7 @@ int run_morph(const MorphOptions& options)
     throw UserError(
       "--normalise distance writes the keys' distances beside the model: give -o FILE");
   }
+  require_normalisation_files(spec.normalisation);
   const frep::morph::KeyPlacement placement =
     options.paste ? frep::morph::KeyPlacement::Pasted : frep::morph::KeyPlacement::Library;
   const frep::morph::MorphText morph =

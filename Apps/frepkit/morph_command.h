@@ -29,6 +29,10 @@ struct MorphOptions
   std::string output;
 };
 
+/// Refuses (UserError) a normalisation whose files this build can neither write nor read again:
+/// the distances are .vti volumes, which need VTK. Called before any key is measured.
+void require_normalisation_files(frep::morph::Normalisation normalisation);
+
 /// The keys' sampled distances of `morph` (Normalisation::Distance) written beside `model` as
 /// MODELSTEM-KEY-distance.vti (each put in place durably); returns the --shape arguments that
 /// load the model again ("mdist_cat=/out/meta5d-cat-distance.vti"), none without distances.

@@ -4,11 +4,13 @@
 # (--library the keys) and the pasted one (one file, no library); a mid cell meshes closed; the
 # spline schemes write loadable models; aligned keys keep exact corners; a bad lattice, a missing key or a clash of names is exit
 # code 1 with the reason, leaving the output file as it was and no temporary behind.
-#   frepkit_morph_test.sh FREPKIT SOURCE_DIR MESH_CHECK
+# Without VTK, --normalise distance is refused before anything is written (its distances are .vti).
+#   frepkit_morph_test.sh FREPKIT SOURCE_DIR MESH_CHECK vtk|novtk
 set -u
 frepkit=$(realpath "$1")
 source_dir=$(realpath "$2")
 check=$(realpath "$3")
+vtk=$4
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -69,7 +71,16 @@ done
 
 # Normalised by distance: the distances written beside the model as .vti; loaded again with the
 # --shape arguments frepkit prints, the corners keep the keys' signs (the zero sets) exactly.
-if run "morph --normalise distance" 0 "$frepkit" morph cat.hf nihon.hf --normalise distance --paste \
+if [ "$vtk" = novtk ]; then
+  run "--normalise distance without VTK" 1 "$frepkit" morph cat.hf nihon.hf --normalise distance \
+    --paste -o "$work/nd.hf"
+  expect_in "needs VTK" "$err" "--normalise distance needs a frepkit built with VTK"
+  if [ ! -e "$work/nd.hf" ] && [ ! -e "$work/nd-cat-distance.vti" ]; then
+    pass "nothing written without VTK"
+  else
+    fail "a refused --normalise left files behind"
+  fi
+elif run "morph --normalise distance" 0 "$frepkit" morph cat.hf nihon.hf --normalise distance --paste \
   -o "$work/nd.hf"; then
   for k in cat nihon; do
     [ -s "$work/nd-$k-distance.vti" ] && pass "nd-$k-distance.vti written" || fail "nd-$k-distance.vti missing"

@@ -5,8 +5,8 @@
 # count and an audio stream of the same duration; the key shapes' STL files are closed
 # meshes; the manifest lists everything and names the model drawn (meta5d.hf in the output folder,
 # written from the key files by the metamorphosis component, keys aligned by size), whose corners
-# are the key files' objects exactly.
-#   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK SPREADSHEET_BASELINE FRAME_BASELINE
+# are the key files' objects exactly. Without VTK, --normalise distance is refused (its files are .vti).
+#   homotopic_demo_test.sh FREPKIT MEDIA_CHECK IMAGE_CHECK MESH_CHECK SPREADSHEET_BASELINE FRAME_BASELINE vtk|novtk
 set -u
 frepkit=$(realpath "$1")
 media=$(realpath "$2")
@@ -14,6 +14,7 @@ image=$(realpath "$3")
 mesh=$(realpath "$4")
 baseline=$(realpath "$5")
 frame_baseline=$(realpath "$6")
+vtk=$7
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -84,17 +85,23 @@ done
 # Normalised by distance (small and meshed, to stay quick): the keys' distance volumes are
 # written beside meta5d.hf and named in the manifest; with them meta5d.hf loads again and its
 # corners are inside exactly where the keys are.
-run "demo --normalise distance" 0 "$frepkit" demo homotopic -O nd --frames 2 --resolution 16 \
-  --mesh-grid 16 --method mesh --normalise distance -q
-shapes=$(/usr/bin/python3 -c "import json; m = json.load(open('nd/manifest.json'))['morph']; print(m['normalisation'], ' '.join('--shape %s=nd/%s' % kv for kv in sorted(m['shapes'].items())))")
-expect_in "manifest names the distances" "$shapes" "distance --shape mdist_cat=nd/meta5d-cat-distance.vti"
-for key in "cat 0 0" "roblet 1 1"; do
-  set -- $key
-  awk 'BEGIN { srand(7); for (i = 0; i < 200; i++) print -9 + 18 * rand(), -9 + 18 * rand(), -9 + 18 * rand() }' > p3.txt
-  blend=$(awk -v a="$2" -v b="$3" '{ print $0, a, b }' p3.txt | "$frepkit" eval nd/meta5d.hf -o meta5d ${shapes#distance } | awk '{ print ($1 >= 0) }')
-  own=$("$frepkit" eval "$examples/$1.hf" -o "$1" -p p3.txt | awk '{ print ($1 >= 0) }')
-  if [ "$(echo "$blend" | wc -l)" -eq 200 ] && [ "$blend" == "$own" ]; then pass "normalised meta5d.hf at ($2, $3) is inside where $1.hf is"; else fail "normalised meta5d.hf at ($2, $3): sides differ from $1.hf"; fi
-done
+if [ "$vtk" = novtk ]; then
+  run "demo --normalise distance without VTK" 1 "$frepkit" demo homotopic -O nd --frames 2 \
+    --resolution 16 --mesh-grid 16 --method mesh --normalise distance -q
+  expect_in "needs VTK" "$err" "--normalise distance needs a frepkit built with VTK"
+else
+  run "demo --normalise distance" 0 "$frepkit" demo homotopic -O nd --frames 2 --resolution 16 \
+    --mesh-grid 16 --method mesh --normalise distance -q
+  shapes=$(/usr/bin/python3 -c "import json; m = json.load(open('nd/manifest.json'))['morph']; print(m['normalisation'], ' '.join('--shape %s=nd/%s' % kv for kv in sorted(m['shapes'].items())))")
+  expect_in "manifest names the distances" "$shapes" "distance --shape mdist_cat=nd/meta5d-cat-distance.vti"
+  for key in "cat 0 0" "roblet 1 1"; do
+    set -- $key
+    awk 'BEGIN { srand(7); for (i = 0; i < 200; i++) print -9 + 18 * rand(), -9 + 18 * rand(), -9 + 18 * rand() }' > p3.txt
+    blend=$(awk -v a="$2" -v b="$3" '{ print $0, a, b }' p3.txt | "$frepkit" eval nd/meta5d.hf -o meta5d ${shapes#distance } | awk '{ print ($1 >= 0) }')
+    own=$("$frepkit" eval "$examples/$1.hf" -o "$1" -p p3.txt | awk '{ print ($1 >= 0) }')
+    if [ "$(echo "$blend" | wc -l)" -eq 200 ] && [ "$blend" == "$own" ]; then pass "normalised meta5d.hf at ($2, $3) is inside where $1.hf is"; else fail "normalised meta5d.hf at ($2, $3): sides differ from $1.hf"; fi
+  done
+fi
 
 echo "$checks checks, $failures failed"
 [ "$failures" -eq 0 ]

@@ -50,6 +50,23 @@ void vtkFRepMetamorphosis::RemoveAllLatticeAxes()
 }
 
 //------------------------------------------------------------------------------
+void vtkFRepMetamorphosis::AddKeyWeight(const char* key, const char* expression)
+{
+  this->KeyWeights.emplace_back(key ? key : "", expression ? expression : "");
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkFRepMetamorphosis::RemoveAllKeyWeights()
+{
+  if (!this->KeyWeights.empty())
+  {
+    this->KeyWeights.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkFRepMetamorphosis::ReadProgramText(std::string& text, std::string& sourceName)
 {
   frep::morph::MorphSpec spec;
@@ -71,6 +88,16 @@ bool vtkFRepMetamorphosis::ReadProgramText(std::string& text, std::string& sourc
   spec.normalisation = this->Normalisation == NORMALISE_DISTANCE
                          ? frep::morph::Normalisation::Distance
                          : frep::morph::Normalisation::None;
+  constexpr frep::morph::TimingCurve curves[] = { frep::morph::TimingCurve::Linear,
+    frep::morph::TimingCurve::Ease,
+    frep::morph::TimingCurve::EaseIn,
+    frep::morph::TimingCurve::EaseOut,
+    frep::morph::TimingCurve::Hold };
+  spec.timing = { curves[this->Timing], this->HoldFraction };
+  for (const auto& [key, expression] : this->KeyWeights)
+  {
+    spec.key_weights.push_back({ key, expression });
+  }
   frep::LoadOptions keyOptions;
   if (!this->Superclass::AddUserFunctions(keyOptions))
   {
@@ -152,4 +179,12 @@ void vtkFRepMetamorphosis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scheme: " << this->Scheme << "\n";
   os << indent << "Alignment: " << this->Alignment << "\n";
   os << indent << "Normalisation: " << this->Normalisation << "\n";
+  os << indent << "Timing: " << this->Timing << "\n";
+  os << indent << "HoldFraction: " << this->HoldFraction << "\n";
+  os << indent << "KeyWeights (" << this->KeyWeights.size() << "):";
+  for (const auto& [key, expression] : this->KeyWeights)
+  {
+    os << " " << key << "=" << expression;
+  }
+  os << "\n";
 }

@@ -27,7 +27,8 @@
 
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
-#include <vector> // for std::vector
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 namespace frep
 {
@@ -107,9 +108,48 @@ public:
   vtkGetMacro(Normalisation, int);
   ///@}
 
+  enum
+  {
+    TIMING_LINEAR = 0,   ///< the blend moves at a constant rate (the paper)
+    TIMING_EASE = 1,     ///< starts and stops gently at every key (smoothstep)
+    TIMING_EASE_IN = 2,  ///< leaves each key slowly
+    TIMING_EASE_OUT = 3, ///< arrives at each key slowly
+    TIMING_HOLD = 4      ///< each key alone for HoldFraction/2 of the way on either side
+  };
+  ///@{
+  /**
+   * How the blend moves between neighbouring keys on every parameter (default TIMING_LINEAR;
+   * Documentation/metamorphosis.md, "Timing and key weights"). Every key stays itself at its node.
+   */
+  vtkSetClampMacro(Timing, int, TIMING_LINEAR, TIMING_HOLD);
+  vtkGetMacro(Timing, int);
+  ///@}
+
+  ///@{
+  /**
+   * TIMING_HOLD's fraction of each segment during which a key is held (default 0.5, in
+   * [0, 0.99]).
+   */
+  vtkSetClampMacro(HoldFraction, double, 0.0, 0.99);
+  vtkGetMacro(HoldFraction, double);
+  ///@}
+
+  ///@{
+  /**
+   * A key's own weight: `key` is its object name, `expression` a number (global) or a HyperFun
+   * expression of the point x[] (local; mx[] is the point in the keys' space, for a field
+   * function: vol(mx)). Weights are at least 0.001 and normalised; keys not named weigh 1. Needs
+   * LINEAR or B_SPLINE (an error with CATMULL_ROM).
+   */
+  void AddKeyWeight(const char* key, const char* expression);
+  void RemoveAllKeyWeights();
+  int GetNumberOfKeyWeights() const { return static_cast<int>(this->KeyWeights.size()); }
+  ///@}
+
 protected:
   /**
-   * Defaults: no keys, no lattice axes, LINEAR, ALIGN_NONE, NORMALISE_NONE.
+   * Defaults: no keys, no lattice axes, LINEAR, ALIGN_NONE, NORMALISE_NONE, TIMING_LINEAR with
+   * HoldFraction 0.5, no key weights.
    */
   vtkFRepMetamorphosis();
   ~vtkFRepMetamorphosis() override;
@@ -125,6 +165,9 @@ protected:
   int Scheme = LINEAR;
   int Alignment = ALIGN_NONE;
   int Normalisation = NORMALISE_NONE;
+  int Timing = TIMING_LINEAR;
+  double HoldFraction = 0.5;
+  std::vector<std::pair<std::string, std::string>> KeyWeights;
   std::shared_ptr<const frep::UserFunctionRegistry> Distances; ///< of the last program written
 
 private:

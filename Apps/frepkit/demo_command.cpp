@@ -106,11 +106,16 @@ nlohmann::json morph_json(const frep::morph::MorphSpec& spec)
     keys.push_back(
       { { "file", fs::path(key.file).filename().string() }, { "object", key.object } });
   }
+  nlohmann::json key_weights = nlohmann::json::object();
+  for (const frep::morph::KeyWeight& weight : spec.key_weights)
+    key_weights[weight.key] = weight.expression;
   return { { "keys", keys },
     { "lattice", spec.lattice },
     { "scheme", frep::morph::interpolation_name(spec.scheme) },
     { "alignment", frep::morph::alignment_name(spec.alignment) },
-    { "normalisation", frep::morph::normalisation_name(spec.normalisation) } };
+    { "normalisation", frep::morph::normalisation_name(spec.normalisation) },
+    { "timing", frep::morph::timing_name(spec.timing) },
+    { "key_weights", key_weights } };
 }
 
 std::size_t stl_triangles(const fs::path& stl)
@@ -160,6 +165,7 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
       "meta5d.hf as meta5d-KEY-distance.vti)")
     ->check(CLI::IsMember({ "none", "distance" }))
     ->capture_default_str();
+  add_blend_options(*cmd, o.blend);
   cmd->add_flag("--force", o.force, "render every frame again");
   cmd->add_option("-j,--threads", o.threads, "worker threads (default: all cores)")
     ->check(CLI::Range(0, 1024));
@@ -175,9 +181,10 @@ int run_demo(const DemoOptions& options)
 
   // 1. The model, written from the key files; then the mapping (it validates everything
   // before writing any picture).
-  const frep::morph::MorphSpec morph = meta5d_spec(examples,
+  frep::morph::MorphSpec morph = meta5d_spec(examples,
     *frep::morph::alignment_from_name(options.align),
     *frep::morph::normalisation_from_name(options.normalise));
+  apply_blend_options(options.blend, morph);
   require_normalisation_files(morph.normalisation);
   const fs::path model = out / "meta5d.hf";
   MapOptions map;

@@ -6,6 +6,8 @@
 // manifest.json listing all of it (with the model's file and how it was blended).
 #pragma once
 
+#include "morph_command.h"
+
 #include <optional>
 #include <string>
 
@@ -28,6 +30,7 @@ struct DemoOptions
   int mesh_grid = 256;               ///< grid of the key shapes' meshes
   std::string align = "size";        ///< Meta5D's keys aligned: none (the paper), centroid or size
   std::string normalise = "none";    ///< Meta5D's keys' values: none or distance
+  BlendOptions blend;                ///< Meta5D's timing and key weights
   bool force = false;
   int threads = 0;
   bool quiet = false;

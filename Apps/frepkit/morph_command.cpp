@@ -95,6 +95,42 @@ std::vector<std::string> write_distances(const frep::morph::MorphText& morph,
   return shapes;
 }
 
+void add_blend_options(CLI::App& command, BlendOptions& options)
+{
+  command
+    .add_option("--timing",
+      options.timing,
+      "How the blend moves between neighbouring keys: linear, ease (starts and stops gently at "
+      "each key), ease-in, ease-out, or hold:H (each key shown alone for H/2 of the way on "
+      "either side, 0 <= H < 1)")
+    ->check(
+      [](const std::string& name)
+      {
+        return frep::morph::timing_from_name(name)
+                 ? std::string()
+                 : "not a timing (linear, ease, ease-in, ease-out, hold:H with 0 <= H < 1)";
+      })
+    ->capture_default_str();
+  command.add_option("--key-weight",
+    options.key_weights,
+    "KEY=EXPRESSION: how much the key (its object name) counts against the others: a number "
+    "(globally), or a HyperFun expression of the point x[] (locally; mx[] is the point in the "
+    "keys' space, for a field: vol(mx)). Weights are at least 0.001 and normalised; every key "
+    "is still itself at its node. Repeatable; linear or b-spline only");
+}
+
+void apply_blend_options(const BlendOptions& options, frep::morph::MorphSpec& spec)
+{
+  spec.timing = *frep::morph::timing_from_name(options.timing);
+  for (const std::string& weight : options.key_weights)
+  {
+    const std::size_t equals = weight.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == weight.size())
+      throw UserError("--key-weight " + weight + ": give KEY=EXPRESSION, e.g. cat=2");
+    spec.key_weights.push_back({ weight.substr(0, equals), weight.substr(equals + 1) });
+  }
+}
+
 CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
 {
   CLI::App* morph = app.add_subcommand("morph",
@@ -135,6 +171,7 @@ CLI::App* add_morph_command(CLI::App& app, MorphOptions& options)
       "STEM-KEY-distance.vti; the keys' zero sets are kept exactly)")
     ->check(CLI::IsMember({ "none", "distance" }))
     ->capture_default_str();
+  add_blend_options(*morph, options.blend);
   morph->add_flag("--paste",
     options.paste,
     "Copy the keys' objects into the file (one file the original HyperFun reads); default: "
@@ -155,6 +192,7 @@ int run_morph(const MorphOptions& options)
   spec.name = options.name;
   spec.alignment = *frep::morph::alignment_from_name(options.align);
   spec.normalisation = *frep::morph::normalisation_from_name(options.normalise);
+  apply_blend_options(options.blend, spec);
   if (spec.normalisation != frep::morph::Normalisation::None && options.output == "-")
   {
     throw UserError(

@@ -16,6 +16,19 @@ class App;
 namespace frepkit
 {
 
+/// How the keys are weighed as the blend proceeds: options shared by frepkit morph and demo.
+struct BlendOptions
+{
+  std::string timing = "linear";        ///< Morph/timing.h's names ("ease", "hold:0.3", ...)
+  std::vector<std::string> key_weights; ///< KEY=EXPRESSION, each once
+};
+
+/// --timing and --key-weight on `command`.
+void add_blend_options(CLI::App& command, BlendOptions& options);
+
+/// The blend options into `spec` (a UserError for a key weight without '=').
+void apply_blend_options(const BlendOptions& options, frep::morph::MorphSpec& spec);
+
 struct MorphOptions
 {
   UserInputs user;               ///< the keys' own --library and --shape
@@ -26,6 +39,7 @@ struct MorphOptions
   bool paste = false;
   std::string align = "none";
   std::string normalise = "none";
+  BlendOptions blend;
   std::string output;
 };
 

@@ -1,5 +1,6 @@
 #include "Morph/morph_text.h"
 
+#include "Morph/detail/key_weight_check.h"
 #include "Morph/detail/weight_text.h"
 #include "Shapes/shape_functions.h"
 
@@ -227,6 +228,10 @@ std::string header(const MorphSpec& spec,
               "] = " + weight_text::node_value(nodes[a], spec.lattice[a]);
     out += comment(line + ": " + keys[k].name + " (" + keys[k].file + ")");
   }
+  if (spec.timing.curve != TimingCurve::Linear)
+    out += comment(" Timed: " + timing_name(spec.timing) + " between neighbouring keys.");
+  for (const KeyWeight& weight : spec.key_weights)
+    out += comment(" Key weight of " + lower(weight.key) + ": " + weight.expression);
   if (spec.normalisation == Normalisation::Distance)
   {
     out += comment(
@@ -355,6 +360,13 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
   if (!read_keys(spec, key_options, keys, files, result.diagnostics) ||
       !check_keys(spec, keys, files, result.diagnostics))
     return result;
+  std::vector<std::string> key_names;
+  for (const KeyObject& key : keys)
+    key_names.push_back(key.name);
+  const std::vector<std::string> key_weights = detail::key_weight_expressions(
+    spec, key_names, keys.front().x_dim, keys.front().a_dim, key_options, result.diagnostics);
+  if (!result.ok())
+    return result;
   std::vector<KeyFrame> frames;
   if (spec.alignment != Alignment::None &&
       !measure_keys(
@@ -386,9 +398,6 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
   const int d = keys.front().x_dim;
   const int a_dim = keys.front().a_dim;
   result.x_dim = d + static_cast<int>(spec.lattice.size());
-  std::vector<std::string> key_names;
-  for (const KeyObject& key : keys)
-    key_names.push_back(key.name);
   std::string text = header(spec, keys, d, placement) + "\n";
   if (placement == KeyPlacement::Pasted)
   {
@@ -405,10 +414,18 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
   const std::string name = lower(spec.name);
   const std::string head =
     "(x[" + std::to_string(result.x_dim) + "], a[" + std::to_string(a_dim) + "])";
-  text += "-- the metamorphosis\n" + name + head + "\n{\n" +
-          weight_text::body(
-            name, d, spec.lattice, spec.scheme, key_names, spec.alignment, frames, normals) +
-          "}\n";
+  weight_text::Body body;
+  body.name = name;
+  body.d = d;
+  body.lattice = spec.lattice;
+  body.scheme = spec.scheme;
+  body.timing = spec.timing;
+  body.keys = key_names;
+  body.alignment = spec.alignment;
+  body.frames = frames;
+  body.normals = normals;
+  body.key_weights = key_weights;
+  text += "-- the metamorphosis\n" + name + head + "\n{\n" + weight_text::body(body) + "}\n";
   if (name != "my_model")
   {
     text += "\n-- the default object (hfp and frepkit evaluate my_model when no object is named)\n"

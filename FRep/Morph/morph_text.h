@@ -24,6 +24,7 @@
 #include "Morph/key_distance.h"
 #include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
+#include "Morph/timing.h"
 
 #include <string>
 #include <vector>
@@ -38,6 +39,18 @@ struct Key
     object; ///< its object (any case); empty: the file's default (my_model, else the first)
 };
 
+/// A key's own weight (issue 29, item 3): how much the key counts against the others, globally
+/// (a number) or point by point (an expression of the point). One HyperFun expression over the
+/// morph's x[] (x[1..d] the point, x[d+1..] the parameters: a weight can change along the
+/// blend), its a[], and mx[1..d], the point as an array of d items (for a field: vol(mx)).
+/// Each key's lattice weight w is multiplied by max(expression, 0.001) and the products are
+/// normalised to sum to 1, so at its node a key is still itself exactly.
+struct KeyWeight
+{
+  std::string key;        ///< the key's object name (any case); every node it stands at
+  std::string expression; ///< e.g. "2", "1 + max(x[3], 0)", "vol(mx)"
+};
+
 struct MorphSpec
 {
   /// In lattice order, the first parameter axis fastest: key i_0 + n_0 (i_1 + n_1 (...)). The
@@ -46,6 +59,11 @@ struct MorphSpec
   /// Nodes per parameter axis (each >= 2); their product is the number of keys.
   std::vector<int> lattice;
   Interpolation scheme = Interpolation::Linear;
+  /// How the parameter moves between neighbouring keys (timing.h), on every axis.
+  Timing timing;
+  /// Keys' own weights (KeyWeight); a key not named weighs 1. Not with Catmull-Rom, whose
+  /// weights go negative (the normalised sum could vanish).
+  std::vector<KeyWeight> key_weights;
   /// Keys aligned as the blend proceeds (key_frame.h): each key evaluated where it would be had
   /// its centroid (and size) travelled to the weights' blend of the keys' centroids (and sizes),
   /// measured on `frame_samples`^d points of each key. The corners stay the keys exactly.

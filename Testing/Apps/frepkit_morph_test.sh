@@ -57,6 +57,24 @@ if run "morph --align size" 0 "$frepkit" morph "${keys[@]}" --lattice 2x2 --alig
     fail "aligned corners differ: $(diff <(echo "$out") <(echo "$corners") | head -4)"
   expect_in "the frame is written" "$(cat "$work/aligned.hf")" "the moving frame"
 fi
+# Timed and weighted: the corners are still the keys; the middle moves toward the heavier key.
+if run "morph --timing ease --key-weight" 0 "$frepkit" morph "${keys[@]}" --lattice 2x2 --paste \
+  --timing ease --key-weight nihon=3 --key-weight "robot=1 + max(mx[3], 0)" -o "$work/weighted.hf"; then
+  run "eval the weighted morph" 0 "$frepkit" eval "$work/weighted.hf" -p "$work/corners.txt"
+  [ "$out" == "$corners" ] && pass "weighted corners = the keys at 40 points" ||
+    fail "weighted corners differ: $(diff <(echo "$out") <(echo "$corners") | head -4)"
+  expect_in "the weights are written" "$(cat "$work/weighted.hf")" "mg2 = max((3), 0.001);"
+fi
+run "key weight without =" 1 "$frepkit" morph cat.hf robot.hf --key-weight cat -o "$work/kept.hf"
+expect_in "key weight form explained" "$err" "give KEY=EXPRESSION"
+run "bad key weight" 1 "$frepkit" morph cat.hf robot.hf --key-weight "cat=2 +* 1" -o "$work/kept.hf"
+expect_in "bad key weight at its column" "$err" "key weight 'cat':1:4: error"
+run "key weight with catmull-rom" 1 "$frepkit" morph cat.hf robot.hf --key-weight cat=2 \
+  --scheme catmull-rom -o "$work/kept.hf"
+expect_in "catmull-rom refused" "$err" "never negative"
+run "bad timing" 1 "$frepkit" morph cat.hf robot.hf --timing hold:1 -o "$work/kept.hf"
+expect_in "timing explained" "$err" "not a timing"
+
 for scheme in catmull-rom b-spline; do
   if run "morph 5 keys, $scheme" 0 "$frepkit" morph cat.hf robot.hf nihon.hf roblet.hf cat.hf:cat \
     --scheme "$scheme" --paste -o "$work/$scheme.hf"; then

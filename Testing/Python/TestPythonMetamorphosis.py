@@ -9,6 +9,9 @@
   and the middle differs;
 - normalised by distance (SetNormalisation(NORMALISE_DISTANCE)): at the corners every point is
   on the key's side (the zero sets kept) and the values differ from the keys' (the distances);
+- timed (SetTiming(TIMING_EASE)) and with key weights (AddKeyWeight("nihon", "3")): the corners
+  are still the keys bit for bit, the middle differs; a bad key-weight expression raises
+  FRepError naming the key weight and its column;
 - a lattice that does not match the keys: frepkit.update raises FRepError with the engine's
   message.
 Exits 1 on any failed check."""
@@ -64,6 +67,23 @@ values = frepkit.evaluate(normalised.GetOutput(), points)
 check(numpy.array_equal(values[corners] >= 0, theirs[corners] >= 0),
       "normalised by distance, the corners are inside exactly where the keys are (%d points)" % corners.sum())
 check(not numpy.array_equal(values[corners], theirs[corners]), "normalised, the corners' values change")
+
+weighted = morph()
+weighted.SetTiming(vtkFRepMetamorphosis.TIMING_EASE)
+weighted.AddKeyWeight("nihon", "3")
+weighted.AddKeyWeight("robot", "1 + max(mx[3], 0)")
+frepkit.update(weighted)
+values = frepkit.evaluate(weighted.GetOutput(), points)
+check(numpy.array_equal(values[corners], theirs[corners]),
+      "timed and weighted, the corners are the keys bit for bit (%d points)" % corners.sum())
+check(not numpy.array_equal(values[~corners], theirs[~corners]), "timed and weighted, the middle differs")
+weighted.RemoveAllKeyWeights()
+weighted.AddKeyWeight("nihon", "2 +* 1")
+try:
+    frepkit.update(weighted)
+    check(False, "a bad key weight raises FRepError")
+except frepkit.FRepError as e:
+    check("key weight 'nihon':1:4" in str(e), "a bad key weight raises FRepError at its column: %s" % str(e).splitlines()[0])
 
 bad = morph(axes=(3,))
 try:

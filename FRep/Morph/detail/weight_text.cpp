@@ -128,6 +128,49 @@ std::string interior(int c, int n, Interpolation scheme, int depth)
                  [&](int i, int at) { return segment(c, n, i, scheme, at); });
 }
 
+// A number as a HyperFun literal: fixed notation (an exponent like e-05 is a syntax error, and
+// the literal is read as digits over powers of 10 anyway: these are measurements, not exact).
+std::string literal(double value)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6f", std::fabs(value));
+  return value < 0 ? std::string("(-") + text + ")" : std::string(text);
+}
+
+// u's remapping (timing.h's timing_curve), as text.
+std::string curve_text(const Timing& timing, const std::string& u)
+{
+  switch (timing.curve)
+  {
+    case TimingCurve::Linear:
+      return u;
+    case TimingCurve::Ease:
+      return u + "*" + u + "*(3 - 2*" + u + ")";
+    case TimingCurve::EaseIn:
+      return u + "*" + u;
+    case TimingCurve::EaseOut:
+      return u + "*(2 - " + u + ")";
+    case TimingCurve::Hold:
+      break;
+  }
+  return "min(max((" + u + " - " + literal(timing.hold / 2.0) + ")/" +
+         literal(1.0 - timing.hold) + ", 0), 1)";
+}
+
+// t timed (timing.h's timed_parameter), for 0 < t < 1: mi the segment, mu the place in it.
+std::string timing_statements(int c, int n, const Timing& timing, int depth)
+{
+  if (timing.curve == TimingCurve::Linear)
+    return {};
+  const std::string in = indent(depth), t = v("mt", c), s = v("ms", c), i = v("mi", c),
+                    u = v("mu", c), last = std::to_string(n - 1), before = std::to_string(n - 2);
+  return in + "-- timed: " + timing_name(timing) + " between neighbouring keys\n" + in + s +
+         " = " + t + "*" + last + ";\n" + in + i + " = floor(" + s + ");\n" + in + "if " + i +
+         " > " + before + " then\n" + in + "  " + i + " = " + before + ";\n" + in + "endif;\n" +
+         in + u + " = " + s + " - " + i + ";\n" + in + u + " = " + curve_text(timing, u) + ";\n" +
+         in + t + " = (" + i + " + " + u + ")/" + last + ";\n";
+}
+
 // The blend of the sub-lattice of axes 0..a at the higher axes' `offset`, as morph_text.h says.
 std::string blend(int a, std::size_t offset, int d, const std::vector<int>& lattice)
 {
@@ -144,15 +187,6 @@ std::string blend(int a, std::size_t offset, int d, const std::vector<int>& latt
     out += (i ? " + " : "") + (a == 0 ? part : "(" + part + ")") + "*" + v("mw", d + 1 + a, i);
   }
   return out;
-}
-
-// A number as a HyperFun literal: fixed notation (an exponent like e-05 is a syntax error, and
-// the literal is read as digits over powers of 10 anyway: these are measurements, not exact).
-std::string literal(double value)
-{
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6f", std::fabs(value));
-  return value < 0 ? std::string("(-") + text + ")" : std::string(text);
 }
 
 // Key k's nodes' weights joined by `glue` ("*": the lattice weight; or a test per weight).
@@ -173,16 +207,12 @@ std::string key_weights(std::size_t k,
 // point my<k>[1..d]: where the key would be had it travelled (and grown) into the frame; at a
 // corner (weight 1) x itself, so the corners stay the keys exactly.
 std::string frame_statements(int d,
-  const std::vector<int>& lattice,
   Alignment alignment,
   const std::vector<KeyFrame>& frames)
 {
   std::string out = "  -- the moving frame: the keys' centroids" +
                     std::string(alignment == Alignment::CentroidAndSize ? " and sizes" : "") +
                     ", blended with their weights\n";
-  for (std::size_t k = 0; k < frames.size(); ++k)
-    out += "  mW" + std::to_string(k) + " = " +
-           key_weights(k, d, lattice, "*", [](const std::string& w) { return w; }) + ";\n";
   const auto blended = [&](const std::function<double(const KeyFrame&)>& of)
   {
     std::string sum;
@@ -215,6 +245,51 @@ std::string frame_statements(int d,
     }
     out += "  endif;\n";
   }
+  return out;
+}
+
+// mW<k>, each key's lattice weight (the product of its nodes' axis weights); with key weights,
+// times the key's own weight mg<k> (evaluated only where the key counts) and normalised to sum
+// to 1. At a node the node's key has mg*1/(mg*1 + 0 + ...) = 1 exactly, the others 0.
+std::string key_weight_statements(int d,
+  const std::vector<int>& lattice,
+  const std::vector<std::string>& expressions)
+{
+  const std::size_t keys = expressions.size();
+  std::size_t count = 1;
+  for (const int n : lattice)
+    count *= static_cast<std::size_t>(n);
+  std::string out = "  -- each key's lattice weight\n";
+  for (std::size_t k = 0; k < count; ++k)
+    out += "  mW" + std::to_string(k) + " = " +
+           key_weights(k, d, lattice, "*", [](const std::string& w) { return w; }) + ";\n";
+  if (keys == 0)
+    return out;
+  out += "  -- times the keys' own weights (at least 0.001), normalised to sum to 1\n";
+  std::string sum;
+  for (std::size_t k = 0; k < keys; ++k)
+  {
+    const std::string g = "mg" + std::to_string(k), W = "mW" + std::to_string(k);
+    if (expressions[k].empty())
+      out += "  " + g + " = 1;\n";
+    else
+      out += "  " + g + " = 0;\n  if " + W + " < 0 or " + W + " > 0 then\n    " + g +
+             " = max(" + expressions[k] + ", 0.001);\n  endif;\n";
+    sum += (k ? " + " : "") + g + "*" + W;
+  }
+  out += "  msum = " + sum + ";\n";
+  for (std::size_t k = 0; k < keys; ++k)
+    out += "  mW" + std::to_string(k) + " = mg" + std::to_string(k) + "*mW" + std::to_string(k) +
+           "/msum;\n";
+  return out;
+}
+
+// The blend with key weights: sum of mW<k> mk<k> (mW normalised by key_weight_statements).
+std::string weighted_blend(std::size_t keys)
+{
+  std::string out;
+  for (std::size_t k = 0; k < keys; ++k)
+    out += (k ? " + " : "") + std::string("mW") + std::to_string(k) + "*mk" + std::to_string(k);
   return out;
 }
 
@@ -255,7 +330,7 @@ std::string node_value(int i, int n)
   return out.str();
 }
 
-std::string axis_statements(int c, int n, Interpolation scheme)
+std::string axis_statements(int c, int n, Interpolation scheme, const Timing& timing)
 {
   const std::string t = v("mt", c);
   std::string out = "  -- the weights along x[" + std::to_string(c) + "] (" + std::to_string(n) +
@@ -265,54 +340,60 @@ std::string axis_statements(int c, int n, Interpolation scheme)
     out += "  " + v("mw", c, i) + " = 0;\n";
   out += "  if " + t + " <= 0 then\n    " + v("mw", c, 0) + " = 1;\n  else\n";
   out += "    if " + t + " >= 1 then\n      " + v("mw", c, n - 1) + " = 1;\n    else\n";
+  out += timing_statements(c, n, timing, 3);
   out += interior(c, n, scheme, 3);
   out += "    endif;\n  endif;\n";
   return out;
 }
 
-std::string body(const std::string& name,
-  int d,
-  const std::vector<int>& lattice,
-  Interpolation scheme,
-  const std::vector<std::string>& keys,
-  Alignment alignment,
-  const std::vector<KeyFrame>& frames,
-  const std::vector<KeyNormal>& normals)
+std::string body(const Body& spec)
 {
-  const bool aligned = alignment != Alignment::None && frames.size() == keys.size();
-  std::string out = "  array mx[" + std::to_string(d) + "]";
+  const std::vector<std::string>& keys = spec.keys;
+  const bool aligned = spec.alignment != Alignment::None && spec.frames.size() == keys.size();
+  const bool weighted = spec.key_weights.size() == keys.size() &&
+                        std::any_of(spec.key_weights.begin(),
+                          spec.key_weights.end(),
+                          [](const std::string& e) { return !e.empty(); });
+  std::string out = "  array mx[" + std::to_string(spec.d) + "]";
   for (std::size_t k = 0; aligned && k < keys.size(); ++k)
-    out += ", my" + std::to_string(k) + "[" + std::to_string(d) + "]";
+    out += ", my" + std::to_string(k) + "[" + std::to_string(spec.d) + "]";
   out += ";\n";
-  for (int k = 1; k <= d; ++k)
+  for (int k = 1; k <= spec.d; ++k)
     out += "  mx[" + std::to_string(k) + "] = x[" + std::to_string(k) + "];\n";
-  for (std::size_t a = 0; a < lattice.size(); ++a)
-    out += axis_statements(d + 1 + static_cast<int>(a), lattice[a], scheme);
+  for (std::size_t a = 0; a < spec.lattice.size(); ++a)
+    out += axis_statements(
+      spec.d + 1 + static_cast<int>(a), spec.lattice[a], spec.scheme, spec.timing);
+  if (aligned || weighted)
+    out += key_weight_statements(
+      spec.d, spec.lattice, weighted ? spec.key_weights : std::vector<std::string>{});
   if (aligned)
-    out += frame_statements(d, lattice, alignment, frames);
+    out += frame_statements(spec.d, spec.alignment, spec.frames);
   out += "  -- the keys, each called where its weight is not 0\n";
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     // Exact tests: HyperFun's /= has a tolerance of 1e-6.
     const std::string test = key_weights(k,
-      d,
-      lattice,
+      spec.d,
+      spec.lattice,
       " and ",
       [](const std::string& w) { return "(" + w + " < 0 or " + w + " > 0)"; });
     const std::string mk = "mk" + std::to_string(k);
     const std::string point = aligned ? "my" + std::to_string(k) : std::string("mx");
-    const std::string scale = aligned && alignment == Alignment::CentroidAndSize
-                                ? "*(msz/" + literal(frames[k].size) + ")"
+    const std::string scale = aligned && spec.alignment == Alignment::CentroidAndSize
+                                ? "*(msz/" + literal(spec.frames[k].size) + ")"
                                 : std::string();
     out += "  " + mk + " = 0;\n  if " + test + " then\n";
-    if (normals.size() == keys.size())
-      out += normalised_call(k, keys[k], point, normals[k]) +
+    if (spec.normals.size() == keys.size())
+      out += normalised_call(k, keys[k], point, spec.normals[k]) +
              (scale.empty() ? std::string() : "    " + mk + " = " + mk + scale + ";\n");
     else
       out += "    " + mk + " = " + keys[k] + "(" + point + ", a)" + scale + ";\n";
     out += "  endif;\n";
   }
-  out += "  " + name + " = " + blend(static_cast<int>(lattice.size()) - 1, 0, d, lattice) + ";\n";
+  const std::string blended = weighted
+                                ? weighted_blend(keys.size())
+                                : blend(static_cast<int>(spec.lattice.size()) - 1, 0, spec.d, spec.lattice);
+  out += "  " + spec.name + " = " + blended + ";\n";
   return out;
 }
 

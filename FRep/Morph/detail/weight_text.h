@@ -6,6 +6,7 @@
 
 #include "Morph/key_frame.h"
 #include "Morph/lattice_weights.h"
+#include "Morph/timing.h"
 
 #include <string>
 #include <vector>
@@ -28,20 +29,28 @@ std::vector<int> lattice_indices(std::size_t k, const std::vector<int>& lattice)
 std::string node_value(int i, int n);
 
 /// The statements that set mw<c>_0 .. mw<c>_<n-1>, the weights of the axis whose parameter is
-/// x[c], indented by two spaces.
-std::string axis_statements(int c, int n, Interpolation scheme);
+/// x[c] (timed by `timing` first), indented by two spaces.
+std::string axis_statements(int c, int n, Interpolation scheme, const Timing& timing = {});
+
+/// What the object's body is written from.
+struct Body
+{
+  std::string name; ///< the object
+  int d = 0;        ///< the keys' coordinates
+  std::vector<int> lattice;
+  Interpolation scheme = Interpolation::Linear;
+  Timing timing;
+  std::vector<std::string> keys; ///< in lattice order, the objects called
+  Alignment alignment = Alignment::None;
+  std::vector<KeyFrame> frames;   ///< with an alignment, one per key (measured)
+  std::vector<KeyNormal> normals; ///< empty, or one per key (normalised by distance)
+  /// Empty, or one per key: the key's own weight as a HyperFun expression (empty: 1).
+  std::vector<std::string> key_weights;
+};
 
 /// The object's body between its braces: the local copy of x[1..d], every axis's weights, with
-/// an alignment the moving frame and each key's point in it (`frames`: one per key, measured),
-/// the keys' calls (lattice order; with `normals`, one per key, each normalised by distance)
-/// and the final `name = blend;`.
-std::string body(const std::string& name,
-  int d,
-  const std::vector<int>& lattice,
-  Interpolation scheme,
-  const std::vector<std::string>& keys,
-  Alignment alignment = Alignment::None,
-  const std::vector<KeyFrame>& frames = {},
-  const std::vector<KeyNormal>& normals = {});
+/// key weights their normalised products, with an alignment the moving frame and each key's
+/// point in it, the keys' calls (lattice order) and the final `name = blend;`.
+std::string body(const Body& spec);
 
 } // namespace frep::morph::weight_text

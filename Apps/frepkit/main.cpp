@@ -9,6 +9,7 @@
 #include "map_command.h"
 #include "mesh_command.h"
 #include "morph_command.h"
+#include "query_command.h"
 #include "slice_command.h"
 #include "render_command.h"
 #include "user_error.h"
@@ -129,6 +130,8 @@ int main(int argc, char** argv)
   CLI::App* demo = frepkit::add_demo_command(app, demo_options);
   frepkit::MorphOptions morph_options;
   CLI::App* morph = frepkit::add_morph_command(app, morph_options);
+  frepkit::QueryOptions query_options;
+  CLI::App* query = frepkit::add_query_command(app, query_options);
   // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
   app
     .add_subcommand("hfp",
@@ -180,6 +183,10 @@ int main(int argc, char** argv)
       if (morph->parsed())
       {
         return frepkit::run_morph(morph_options);
+      }
+      if (query->parsed())
+      {
+        return frepkit::run_query(query_options);
       }
       return 0;
     });

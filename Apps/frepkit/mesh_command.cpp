@@ -2,6 +2,7 @@
 
 #include "Compiler/attribute_rgb.h"
 #include "box_option.h"
+#include "projection_option.h"
 #include "section_axes.h"
 #include "mesh_writers/mesh_format.h"
 #include "model_loading.h"
@@ -11,6 +12,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
@@ -76,15 +80,42 @@ CLI::App* add_mesh_command(CLI::App& app, MeshOptions& options)
     ->check(CLI::Range(0, 1024));
   mesh->add_flag("-q,--quiet", options.quiet, "No progress bar and no report (warnings remain)");
   add_user_input_options(mesh, options.user);
+  add_projection_options(mesh, options.projection);
   return mesh;
 }
+
+namespace
+{
+
+// Without --axes the coordinates beyond x3 are fixed at 0: say so, except for the projected
+// ones (their value is read by nothing).
+void note_default_fixed(const frep::ast::Object& object, const std::vector<int>& projected)
+{
+  std::string fixed;
+  int count = 0;
+  for (int i = 3; i < object.x_dim; ++i)
+    if (std::find(projected.begin(), projected.end(), i) == projected.end())
+    {
+      fixed += (fixed.empty() ? "x" : ", x") + std::to_string(i + 1);
+      ++count;
+    }
+  if (count > 0)
+    std::cerr << "frepkit: note: " << object.name << " has x[" << object.x_dim << "]: " << fixed
+              << (count == 1 ? " is" : " are")
+              << " fixed at 0 (choose with --axes, e.g. --axes X,Y,Z,0.5)\n";
+}
+
+} // namespace
 
 int run_mesh(const MeshOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   const MeshFormat format = require_mesh_format(options.output);
-  const frep::LoadedModel loaded =
-    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::LoadedModel loaded = apply_projection(
+    load_model(options.model, options.user, options.object, options.parameters.size()),
+    options.projection,
+    options.parameters,
+    options.quiet);
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
 
@@ -103,13 +134,7 @@ int run_mesh(const MeshOptions& options)
         "contour)");
     }
     axes = default_axes(object.x_dim, 3);
-    if (object.x_dim > 3)
-    {
-      const std::string fixed =
-        object.x_dim == 4 ? std::string("x4 is") : "x4..x" + std::to_string(object.x_dim) + " are";
-      std::cerr << "frepkit: note: " << object.name << " has x[" << object.x_dim << "]: " << fixed
-                << " fixed at 0 (choose with --axes, e.g. --axes X,Y,Z,0.5)\n";
-    }
+    note_default_fixed(object, projected_coordinates(options.projection));
   }
   const std::shared_ptr<const frep::Model> model = loaded.model;
   SurfaceJob job;

@@ -2,6 +2,7 @@
 // triangle mesh in the format of OUT's extension (.stl .obj .ply .wrl .pov .vtp).
 #pragma once
 
+#include "projection_option.h"
 #include "user_inputs.h"
 #include <cstdint>
 #include <optional>
@@ -19,6 +20,7 @@ namespace frepkit
 struct MeshOptions
 {
   UserInputs user; ///< --library, --shape
+  ProjectionInput projection; ///< --project, --project-tolerance
   std::string model;
   std::string output;
   std::optional<std::string> object;

@@ -107,6 +107,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& options)
     ->check(CLI::Range(0, 1024));
   cmd->add_flag("-q,--quiet", options.quiet, "No report");
   add_user_input_options(cmd, options.user);
+  add_projection_options(cmd, options.projection);
   return cmd;
 }
 
@@ -131,11 +132,15 @@ int run_render(const RenderOptions& options)
   const std::array<float, 3> colour = linear_rgb(options.colour, "--colour");
   const std::array<float, 3> background = linear_rgb(options.background, "--background");
 
-  const frep::LoadedModel loaded =
-    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::LoadedModel loaded = apply_projection(
+    load_model(options.model, options.user, options.object, options.parameters.size()),
+    options.projection,
+    options.parameters,
+    options.quiet);
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
-  const SectionAxes axes = parse_fix_free(options.fix, options.free, object.x_dim);
+  const SectionAxes axes = parse_fix_free(
+    fix_projected(options.fix, options.free, options.projection), options.free, object.x_dim);
   if (axes.free.size() != 3)
   {
     throw UserError("frepkit render draws 3-D sections: give 3 free coordinates (" +

@@ -5,6 +5,7 @@
 // with its shadow.
 #pragma once
 
+#include "projection_option.h"
 #include "user_inputs.h"
 
 #include <optional>
@@ -22,6 +23,7 @@ namespace frepkit
 struct RenderOptions
 {
   UserInputs user; ///< --library, --shape
+  ProjectionInput projection; ///< --project, --project-tolerance
   std::string model;
   std::string output;
   std::optional<std::string> object;

@@ -158,17 +158,22 @@ CLI::App* add_slice_command(CLI::App& app, SliceOptions& options)
     ->check(CLI::Range(0, 1024));
   slice->add_flag("-q,--quiet", options.quiet, "No progress bar and no report (warnings remain)");
   add_user_input_options(slice, options.user);
+  add_projection_options(slice, options.projection);
   return slice;
 }
 
 int run_slice(const SliceOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
-  const frep::LoadedModel loaded =
-    load_model(options.model, options.user, options.object, options.parameters.size());
+  const frep::LoadedModel loaded = apply_projection(
+    load_model(options.model, options.user, options.object, options.parameters.size()),
+    options.projection,
+    options.parameters,
+    options.quiet);
   const frep::ast::Object& object =
     loaded.program->objects[static_cast<std::size_t>(loaded.object)];
-  const SectionAxes axes = parse_fix_free(options.fix, options.free, object.x_dim);
+  const SectionAxes axes = parse_fix_free(
+    fix_projected(options.fix, options.free, options.projection), options.free, object.x_dim);
   const int axis_count = static_cast<int>(axes.free.size());
   const SliceKind kind = slice_kind(options.output, axes.free.size());
   require_available(kind, options.output);

@@ -4,6 +4,7 @@
 // `frepkit mesh`) or a sampled volume (.vti).
 #pragma once
 
+#include "projection_option.h"
 #include "user_inputs.h"
 #include <cstdint>
 #include <optional>
@@ -21,6 +22,7 @@ namespace frepkit
 struct SliceOptions
 {
   UserInputs user; ///< --library, --shape
+  ProjectionInput projection; ///< --project, --project-tolerance
   std::string model;
   std::string output;
   std::optional<std::string> object;

@@ -154,6 +154,16 @@ RegionWalker::RegionWalker(std::shared_ptr<const Tape> tape, const RegionWalkerO
 
 RegionWalker::~RegionWalker() = default;
 
+void RegionWalker::restart()
+{
+  walk_->root.throttle = {};
+  if (walk_->entry)
+    walk_->entry->throttle = {};
+  for (const std::unique_ptr<Level>& level : walk_->below)
+    if (level)
+      level->throttle = {};
+}
+
 RegionWalker::Region RegionWalker::root()
 {
   Region r;

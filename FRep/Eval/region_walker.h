@@ -127,6 +127,12 @@ public:
     std::size_t count, double* values, std::uint32_t* errors = nullptr,
     std::span<double* const> attributes = {});
 
+  /// Forgets what the walks so far taught it (whether simplifying a tape's boxes pays), so the
+  /// next walk tries again as a new walker would: for many small walks that each deserve their
+  /// own trial (the projector's, one per point: the first boxes of a point's search rarely
+  /// simplify, the deep ones do).
+  void restart();
+
   const RegionWalkerStatistics& statistics() const { return statistics_; }
   void reset_statistics() { statistics_ = {}; }
 

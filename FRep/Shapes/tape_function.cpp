@@ -1,11 +1,11 @@
 #include "Shapes/tape_function.h"
 
+#include "Eval/detail/object_pool.h"
 #include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
 
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 namespace frep::shapes
@@ -13,90 +13,72 @@ namespace frep::shapes
 namespace
 {
 
-// Evaluators keep per-thread scratch; the user function's forms may run on any thread. A
-// small pool hands each call an evaluator of its own (made on demand, kept for the next call).
+// Evaluators keep per-thread scratch; the user function's forms may run on any thread.
 template<class Evaluator>
-class Pool
+std::shared_ptr<eval::ObjectPool<Evaluator>> evaluator_pool(std::shared_ptr<const Tape> tape)
 {
-public:
-  explicit Pool(std::shared_ptr<const Tape> tape)
-    : tape_(std::move(tape))
-  {
-  }
-  template<class F>
-  auto with(F&& f)
-  {
-    std::unique_ptr<Evaluator> e;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (!free_.empty())
-      {
-        e = std::move(free_.back());
-        free_.pop_back();
-      }
-    }
-    if (!e)
-    {
-      e = std::make_unique<Evaluator>(tape_);
-    }
-    auto result = f(*e);
-    std::lock_guard<std::mutex> lock(mutex_);
-    free_.push_back(std::move(e));
-    return result;
-  }
-
-private:
-  std::shared_ptr<const Tape> tape_;
-  std::mutex mutex_;
-  std::vector<std::unique_ptr<Evaluator>> free_;
-};
+  return std::make_shared<eval::ObjectPool<Evaluator>>(
+    [tape] { return std::make_unique<Evaluator>(tape); });
+}
 
 } // namespace
 
-UserFunction tape_function(const std::string& name, std::shared_ptr<const Tape> tape)
+UserFunction array_function(const std::string& name, int k, ArrayForms forms)
 {
   UserFunction f;
   f.name = name;
-  if (!tape)
-  {
-    return f; // no point form: the registry refuses it
-  }
-  const int k = static_cast<int>(tape->input_count);
   f.kinds = { ArgKind::Array };
   f.array_sizes = { k };
-  auto points = std::make_shared<Pool<PointEvaluator>>(tape);
-  auto intervals = std::make_shared<Pool<IntervalEvaluator>>(tape);
-  auto gradients = std::make_shared<Pool<GradientEvaluator>>(tape);
-  f.point = [points, k](std::span<const UserArgument> args, double& v)
-  {
-    v = points->with([&](PointEvaluator& e)
-      { return e.value(std::span<const double>(args[0].values, static_cast<std::size_t>(k))); });
-    return !std::isnan(v);
-  };
-  f.interval = [intervals, k](std::span<const UserIntervalArgument> args, double& lo, double& hi,
-                 bool& fails)
-  {
-    std::vector<Interval> box(static_cast<std::size_t>(k));
-    for (int i = 0; i < k; ++i)
+  const auto items = [k](const UserArgument& a)
+  { return std::span<const double>(a.values, static_cast<std::size_t>(k)); };
+  if (forms.point)
+    f.point = [point = std::move(forms.point), items](std::span<const UserArgument> args, double& v)
     {
-      box[static_cast<std::size_t>(i)] = Interval{ args[0].lo[i], args[0].hi[i] };
-    }
-    const IntervalResult r = intervals->with([&](IntervalEvaluator& e) { return e.evaluate(box); });
-    lo = r.value.lo;
-    hi = r.value.hi;
-    fails = r.may_fail;
-    return true;
-  };
-  f.gradient = [gradients, k](std::span<const UserArgument> args, double& v, std::span<double> g)
-  {
-    v = gradients->with([&](GradientEvaluator& e)
-      {
-        return e.evaluate(std::span<const double>(args[0].values, static_cast<std::size_t>(k)),
-          g.first(static_cast<std::size_t>(k)));
-      });
-    return !std::isnan(v);
-  };
+      v = point(items(args[0]));
+      return !std::isnan(v);
+    };
+  if (forms.interval)
+    f.interval = [interval = std::move(forms.interval), k](std::span<const UserIntervalArgument> args,
+                   double& lo, double& hi, bool& may_fail)
+    {
+      std::vector<Interval> box(static_cast<std::size_t>(k));
+      for (int i = 0; i < k; ++i)
+        box[static_cast<std::size_t>(i)] = Interval{ args[0].lo[i], args[0].hi[i] };
+      const IntervalResult r = interval(box);
+      lo = r.value.lo;
+      hi = r.value.hi;
+      may_fail = r.may_fail;
+      return true;
+    };
+  if (forms.gradient)
+    f.gradient = [gradient = std::move(forms.gradient), items, k](std::span<const UserArgument> args,
+                   double& v, std::span<double> g)
+    {
+      v = gradient(items(args[0]), g.first(static_cast<std::size_t>(k)));
+      return !std::isnan(v);
+    };
   return f;
+}
+
+UserFunction tape_function(const std::string& name, std::shared_ptr<const Tape> tape)
+{
+  if (!tape)
+  {
+    UserFunction f;
+    f.name = name;
+    return f; // no point form: the registry refuses it
+  }
+  auto points = evaluator_pool<PointEvaluator>(tape);
+  auto intervals = evaluator_pool<IntervalEvaluator>(tape);
+  auto gradients = evaluator_pool<GradientEvaluator>(tape);
+  ArrayForms forms;
+  forms.point = [points](std::span<const double> x)
+  { return points->with([&](PointEvaluator& e) { return e.value(x); }); };
+  forms.interval = [intervals](std::span<const Interval> box)
+  { return intervals->with([&](IntervalEvaluator& e) { return e.evaluate(box); }); };
+  forms.gradient = [gradients](std::span<const double> x, std::span<double> g)
+  { return gradients->with([&](GradientEvaluator& e) { return e.evaluate(x, g); }); };
+  return array_function(name, static_cast<int>(tape->input_count), std::move(forms));
 }
 
 } // namespace frep::shapes

@@ -313,6 +313,23 @@ b = bounds(cyl)
 t.near(b[1], 1.0, 0.1, "cylinder radius")
 t.near(b[5], 2.0, 0.1, "cylinder half height")
 
+# --- FRep Projection: a moving sphere's sweep ---------------------------------------------------
+moving = HyperFunSource(ModelText="mv(x[4], a[1]) { mv = 0.25 - ((x[1] + 1 - 2*x[4])^2 + x[2]^2 + x[3]^2); }")
+projection = FRepProjection(Input=moving)
+t.check(projection.ProjectedCoordinate == 3 and list(projection.ProjectedRange) == [0.0, 1.0],
+        "Projection defaults: x4 over [0, 1]")
+projection.UpdatePipeline()
+t.check(field_range(projection, "FRepDimension") == (3.0, 3.0), "the sweep is 3-D")
+sweep = FRepPolygonizer(Input=projection, SampleDimensions=[40, 20, 20],
+                        ModelBounds=[-1.6, 1.6, -0.7, 0.7, -0.7, 0.7])
+sweep.UpdatePipeline()
+b = bounds(sweep)
+t.near(b[0], -1.5, 0.1, "sweep min x (the capsule's end)")
+t.near(b[1], 1.5, 0.1, "sweep max x")
+projection.ProjectedRange = [0.0, 0.5]
+sweep.UpdatePipeline()
+t.near(bounds(sweep)[1], 0.5, 0.1, "half the way: max x 0.5")
+
 # --- Multimedia Mapper: spreadsheet, frames and time ------------------------------------------
 mreader = HyperFunReader(FileName=morph4d, GenerateGeometry=0)
 mapper = MultimediaMapper(Input=mreader,

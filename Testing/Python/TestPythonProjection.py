@@ -1,0 +1,69 @@
+"""vtkFRepProjection from the Python package frepkit (ctest Python.Projection.python3 and
+.pvpython):
+
+  TestPythonProjection.py
+
+- a sphere moving along x as x4 goes 0 -> 1, projected along x4: a 3-D vtkFRepObject whose values
+  at 1000 random points (frepkit.evaluate) keep the projector's contract against the capsule's
+  closed form (never above it; within the tolerance of it inside the band; beyond it the sign);
+- polygonised: the capsule's volume (vtkMassProperties) within 2 %;
+- a coordinate the model lacks: frepkit.update raises FRepError with the filter's message.
+Exits 1 on any failed check."""
+
+import math
+import os
+import sys
+
+import numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from python_checks import check, finish  # noqa: E402
+
+import frepkit  # noqa: E402
+from frepkit import vtkFRepPolygonizer, vtkFRepProjection, vtkHyperFunSource  # noqa: E402
+from vtkmodules.vtkFiltersCore import vtkMassProperties, vtkTriangleFilter  # noqa: E402
+
+source = vtkHyperFunSource()
+source.SetModelText("moving(x[4], a[1]) { moving = 0.25 - ((x[1] + 1 - 2*x[4])^2 + x[2]^2 + x[3]^2); }")
+projection = vtkFRepProjection()
+projection.SetInputConnection(source.GetOutputPort())
+projection.SetProjectedCoordinate(3)
+projection.SetProjectedRange(0.0, 1.0)
+frepkit.update(projection)
+swept = projection.GetOutput()
+check(swept.GetDimension() == 3, "the sweep is 3-D (got %d)" % swept.GetDimension())
+
+rng = numpy.random.default_rng(28)
+points = rng.uniform([-1.6, -0.7, -0.7], [1.6, 0.7, 0.7], size=(1000, 3))
+values = frepkit.evaluate(swept, points)
+t = numpy.clip((points[:, 0] + 1.0) / 2.0, 0.0, 1.0)
+capsule = 0.25 - ((points[:, 0] + 1 - 2 * t) ** 2 + points[:, 1] ** 2 + points[:, 2] ** 2)
+tol, band = projection.GetTolerance(), projection.GetBand()
+above = numpy.count_nonzero(values > capsule + 1e-12)
+inner = (values >= -band) & (values < band)
+off = numpy.count_nonzero(inner & (values < capsule - tol))
+outer = numpy.count_nonzero((values < -band) & (capsule >= -band + tol))
+check(above == 0, "never above the capsule (%d points above)" % above)
+check(off == 0, "within the tolerance inside the band (%d of %d off)" % (off, inner.sum()))
+check(outer == 0, "beyond the band: outside (%d wrong)" % outer)
+
+mesher = vtkFRepPolygonizer()
+mesher.SetInputConnection(projection.GetOutputPort())
+mesher.SetModelBounds(-1.6, 1.6, -0.7, 0.7, -0.7, 0.7)
+mesher.SetSampleDimensions(48, 24, 24)
+triangles = vtkTriangleFilter()
+triangles.SetInputConnection(mesher.GetOutputPort())
+mass = vtkMassProperties()
+mass.SetInputConnection(triangles.GetOutputPort())
+frepkit.update(mass)
+exact = math.pi * 0.25 * 2 + 4.0 / 3.0 * math.pi * 0.125
+check(abs(mass.GetVolume() - exact) < 0.02 * exact,
+      "the sweep's volume %.4f (capsule %.4f)" % (mass.GetVolume(), exact))
+
+projection.SetProjectedCoordinate(6)
+try:
+    frepkit.update(projection)
+    check(False, "a coordinate the model lacks raises FRepError")
+except frepkit.FRepError as e:
+    check("cannot project along coordinate 6" in str(e), "FRepError says why: %s" % e)
+finish()

@@ -11,6 +11,8 @@ at many points, from and to VTK arrays) and the helpers below, which work with n
 turn VTK errors (the diagnostics of bad HyperFun text carry file:line:col) into exceptions:
 
     load(text=None, file=None, ...)  -> a vtkFRepObject, or FRepError with the diagnostics
+    parametric(surface, resolution)  -> a closed parametric surface (VTK's or (u, v) -> xyz) as
+                                        a 3-D vtkFRepObject: its tessellation's signed distance
     evaluate(obj, points)            -> numpy F (and s[]) at an (N, k) numpy array of points
     update(algorithm)                -> algorithm.Update(), raising FRepError on VTK errors
     ErrorObserver(*objects)          -> collects the ErrorEvent messages of VTK objects
@@ -31,11 +33,11 @@ from .FRepKitSources import *  # noqa: F401,F403,E402
 from .FRepKitFilters import *  # noqa: F401,F403,E402
 from .FRepKitIO import *  # noqa: F401,F403,E402
 from .FRepKitMapping import *  # noqa: F401,F403,E402
-from .FRepKitSources import vtkFRepEvaluator, vtkHyperFunSource  # noqa: E402
+from .FRepKitSources import vtkFRepEvaluator, vtkHyperFunSource, vtkPolyDataToFRep  # noqa: E402
 
 __all__ = [name for name, value in list(globals().items())
            if name.startswith("vtk") and isinstance(value, type)] + [
-    "FRepError", "ErrorObserver", "load", "evaluate", "update"]
+    "FRepError", "ErrorObserver", "load", "evaluate", "update", "parametric"]
 
 
 class FRepError(RuntimeError):
@@ -215,3 +217,72 @@ def evaluate(obj, points, attributes=False, errors=False, threads=0):
     if errors:
         result.append(numpy_support.vtk_to_numpy(ids).copy())
     return result[0] if len(result) == 1 else tuple(result)
+
+
+def _grid_surface(function, nu, nv):
+    """The closed (u, v) grid of `function` over [0, 1)^2 as triangles, wrapped in u and v so
+    that no seam is open; collapsed rows (a pole) are merged by the caller's cleaning."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    points = vtkPoints()
+    for j in range(nv):
+        for i in range(nu):
+            points.InsertNextPoint(*[float(c) for c in function(i / nu, j / nv)])
+    cells = vtkCellArray()
+    for j in range(nv):
+        for i in range(nu):
+            a, b = j * nu + i, j * nu + (i + 1) % nu
+            c, d = ((j + 1) % nv) * nu + (i + 1) % nu, ((j + 1) % nv) * nu + i
+            for tri in ((a, b, c), (a, c, d)):
+                cells.InsertNextCell(3, tri)
+    poly = vtkPolyData()
+    poly.SetPoints(points)
+    poly.SetPolys(cells)
+    return poly
+
+
+def parametric(surface, resolution=128):
+    """A closed parametric surface as a 3-D vtkFRepObject (issue 28, item 5): F is the signed
+    distance to its watertight tessellation (vtkPolyDataToFRep: positive inside, enclosures for
+    culling), so it slices, meshes, ray-casts and combines like any FRep object. `surface` is
+    one of VTK's closed parametric functions (vtkParametricTorus(), vtkParametricEllipsoid(),
+    vtkParametricSuperEllipsoid(), ...; tessellated by vtkParametricFunctionSource at
+    `resolution` x `resolution`) or a Python function (u, v) -> (x, y, z) over [0, 1) x [0, 1)
+    that closes on itself in both u and v (a torus-like surface; a pole, all points alike at
+    v = 0, is merged). The seams are joined by merging coincident points (vtkCleanPolyData) and
+    the orientation fixed by vtkPolyDataToFRep; a surface that is still not closed raises
+    FRepError naming its open edges. The error of F is that of the tessellation."""
+    from vtkmodules.vtkCommonComputationalGeometry import vtkParametricFunction
+    from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkTriangleFilter
+    from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+    resolution = int(resolution)
+    if resolution < 3:
+        raise ValueError("parametric: resolution must be at least 3")
+    if isinstance(surface, vtkParametricFunction):
+        tessellation = vtkParametricFunctionSource()
+        tessellation.SetParametricFunction(surface)
+        tessellation.SetUResolution(resolution)
+        tessellation.SetVResolution(resolution)
+        tessellation.SetWResolution(resolution)
+        update(tessellation)
+        mesh = tessellation.GetOutput()
+    elif callable(surface):
+        mesh = _grid_surface(surface, resolution, resolution)
+    else:
+        raise TypeError("parametric: give a vtkParametricFunction or a function (u, v) -> (x, y, z)")
+    clean = vtkCleanPolyData()
+    clean.SetInputData(mesh)
+    clean.SetTolerance(1e-9)
+    clean.ConvertPolysToLinesOff()
+    clean.ConvertLinesToPointsOff()
+    clean.ConvertStripsToPolysOn()
+    triangles = vtkTriangleFilter()
+    triangles.SetInputConnection(clean.GetOutputPort())
+    triangles.PassLinesOff()
+    triangles.PassVertsOff()
+    to_frep = vtkPolyDataToFRep()
+    to_frep.SetInputConnection(triangles.GetOutputPort())
+    update(to_frep)
+    result = to_frep.GetOutput().NewInstance()
+    result.ShallowCopy(to_frep.GetOutput())
+    return result

@@ -10,6 +10,7 @@
 #include "mesh_command.h"
 #include "morph_command.h"
 #include "query_command.h"
+#include "sweep_command.h"
 #include "slice_command.h"
 #include "render_command.h"
 #include "user_error.h"
@@ -132,6 +133,8 @@ int main(int argc, char** argv)
   CLI::App* morph = frepkit::add_morph_command(app, morph_options);
   frepkit::QueryOptions query_options;
   CLI::App* query = frepkit::add_query_command(app, query_options);
+  frepkit::SweepOptions sweep_options;
+  CLI::App* sweep = frepkit::add_sweep_command(app, sweep_options);
   // Listed for --help only: main() hands "hfp" to its own parser before CLI11 runs.
   app
     .add_subcommand("hfp",
@@ -187,6 +190,10 @@ int main(int argc, char** argv)
       if (query->parsed())
       {
         return frepkit::run_query(query_options);
+      }
+      if (sweep->parsed())
+      {
+        return frepkit::run_sweep(sweep_options);
       }
       return 0;
     });

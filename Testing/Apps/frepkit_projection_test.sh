@@ -63,6 +63,32 @@ run "query volume" 0 "$frepkit" query volume "$work/moving.hf" --time x4=0:1 --s
 expect_in "a table" "$(cat "$work/volume.csv")" "x4,volume,components"
 [ "$(wc -l < "$work/volume.csv")" -eq 4 ] && pass "three times in the table" || fail "table: $(cat "$work/volume.csv")"
 
+# A profile along a path: the ball of radius 0.5 along a polyline, swept: a capsule with a bend.
+cat > "$work/ball.hf" <<'HF'
+ball(x[3], a[1]) { ball = 0.25 - (x[1]^2 + x[2]^2 + x[3]^2); }
+HF
+if run "sweep a ball along a segment" 0 "$frepkit" sweep "$work/ball.hf" --path "-1,0,0;1,0,0" \
+  -o "$work/along.hf"; then
+  expect_in "says how to load it" "$err" "load it with --library $work/ball.hf"
+  if run "mesh the swept ball" 0 "$frepkit" mesh "$work/along.hf" --library "$work/ball.hf" \
+    --project x4=0:1 "${box[@]}" --grid 48 -o "$work/along.stl" -q; then
+    run "its mesh is closed" 0 "$check" "$work/along.stl" --closed
+    v=$(echo "$out" | sed -n 's/.*volume \([0-9.e+-]*\).*/\1/p')
+    awk -v v="${v:-0}" 'BEGIN { exit !(v > 2.0 && v < 2.2) }' && pass "the capsule's volume: $v" ||
+      fail "swept ball's volume '$v' (capsule 2.094)"
+  fi
+fi
+run "sweep along a closed Catmull-Rom path, turned" 0 "$frepkit" sweep "$work/ball.hf" \
+  --path "0,0,0;1,0,0;1,1,0" --closed --curve catmull-rom --orient tangent -o "$work/loop.hf"
+run "the loop loads" 0 "$frepkit" check "$work/loop.hf" --library "$work/ball.hf"
+run "a path of one point" 1 "$frepkit" sweep "$work/ball.hf" --path "0,0,0" -o "$work/kept.hf"
+expect_in "says how many" "$err" "at least 2 points"
+run "a bad path" 1 "$frepkit" sweep "$work/ball.hf" --path "0,0;1,1" -o "$work/kept.hf"
+expect_in "says the syntax" "$err" "give X,Y,Z per point"
+run "a 4-D profile" 1 "$frepkit" sweep "$work/moving.hf" --path "0,0,0;1,0,0" -o "$work/kept.hf"
+expect_in "says 3-D" "$err" "a profile is 3-D"
+[ ! -e "$work/kept.hf" ] && pass "refused sweeps wrote nothing" || fail "a refused sweep wrote a file"
+
 echo "keep me" > "$work/kept.stl"
 run "project along a coordinate the model lacks" 1 "$frepkit" mesh "$work/moving.hf" \
   --project x5=0:1 -o "$work/kept.stl"

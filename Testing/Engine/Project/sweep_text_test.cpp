@@ -1,0 +1,139 @@
+// A profile moved along a path (Project/sweep_text.h): at the path's points the moved profile is
+// the profile placed there; a sphere along a segment, projected, is the capsule; a long profile
+// turned by the tangent lies along the path; bad paths are refused with the reason.
+#include "Compiler/load_model.h"
+#include "Eval/point_evaluator.h"
+#include "Project/projection.h"
+#include "Project/sweep_text.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace
+{
+
+using frep::project::SweepPath;
+
+const char* kBall = "ball(x[3], a[1]) { ball = 0.25 - (x[1]^2 + x[2]^2 + x[3]^2); }\n";
+// Long along its own z (semi-axes 0.1, 0.1, 0.5).
+const char* kCigar = "cigar(x[3], a[1]) { cigar = 1 - ((x[1]/0.1)^2 + (x[2]/0.1)^2 + (x[3]/0.5)^2); }\n";
+
+std::shared_ptr<const frep::Model> sweep_model(const char* profile_text, const std::string& profile,
+  const SweepPath& path)
+{
+  const frep::project::SweepText sweep = frep::project::write_sweep("swept", profile, 1, path);
+  EXPECT_TRUE(sweep.ok()) << frep::format_diagnostics(sweep.diagnostics);
+  frep::LoadOptions options;
+  options.object = "swept";
+  const frep::LoadedModel loaded = frep::load_model(
+    frep::ModelSource::from_text(std::string(profile_text) + sweep.text, "sweep.hf"), options);
+  EXPECT_TRUE(loaded.ok()) << loaded.message() << "\n" << sweep.text;
+  return loaded.model;
+}
+
+double value(const frep::Model& m, std::vector<double> x)
+{
+  frep::PointEvaluator e(m.tape());
+  return e.value(x);
+}
+
+TEST(SweepText, AtThePathsPointsTheProfileIsPlacedThere)
+{
+  for (const SweepPath::Curve curve : { SweepPath::Curve::Polyline, SweepPath::Curve::CatmullRom })
+    for (const bool closed : { false, true })
+    {
+      SweepPath path;
+      path.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.5 }, { 0, 1, 1 } };
+      path.curve = curve;
+      path.closed = closed;
+      const auto swept = sweep_model(kBall, "ball", path);
+      ASSERT_TRUE(swept);
+      const int segments = closed ? 4 : 3;
+      for (int i = 0; i <= segments; ++i)
+      {
+        const auto& p = path.points[static_cast<std::size_t>(i % 4)];
+        const double t = double(i) / segments;
+        EXPECT_NEAR(value(*swept, { p[0], p[1], p[2], t }), 0.25, 1e-8) << i;
+        EXPECT_NEAR(value(*swept, { p[0] + 0.3, p[1], p[2], t }), 0.25 - 0.09, 1e-8) << i;
+      }
+    }
+}
+
+TEST(SweepText, SphereAlongASegmentSweepsTheCapsule)
+{
+  SweepPath path;
+  path.points = { { -1, 0, 0 }, { 1, 0.5, 0 } };
+  const auto swept = sweep_model(kBall, "ball", path);
+  ASSERT_TRUE(swept);
+  frep::project::ProjectionOptions options;
+  options.band = INFINITY;
+  const frep::LoadedModel capsule = frep::project::project(swept, { { 4, 0, 1 } }, options);
+  ASSERT_TRUE(capsule.ok()) << capsule.message();
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> u(-1.6, 1.6);
+  for (int i = 0; i < 300; ++i)
+  {
+    const double p[3] = { u(random), u(random) * 0.6, u(random) * 0.4 };
+    const double ap[2] = { p[0] + 1, p[1] };
+    const double t = std::clamp((ap[0] * 2 + ap[1] * 0.5) / 4.25, 0.0, 1.0);
+    const double q[3] = { ap[0] - 2 * t, ap[1] - 0.5 * t, p[2] };
+    const double exact = 0.25 - (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    const double v = value(*capsule.model, { p[0], p[1], p[2] });
+    EXPECT_LE(v, exact + 1e-9);
+    EXPECT_GE(v, exact - options.tolerance - 1e-9);
+  }
+}
+
+TEST(SweepText, TangentOrientationLaysTheProfileAlongThePath)
+{
+  SweepPath path;
+  path.points = { { 0, 0, 0 }, { 2, 0, 0 } }; // along x
+  path.orientation = SweepPath::Orientation::Tangent;
+  const auto along = sweep_model(kCigar, "cigar", path);
+  path.orientation = SweepPath::Orientation::Fixed;
+  const auto fixed = sweep_model(kCigar, "cigar", path);
+  ASSERT_TRUE(along && fixed);
+  // At t = 0.5 the centre is (1, 0, 0): turned, the cigar reaches 0.4 along x, not along z.
+  EXPECT_GT(value(*along, { 1.4, 0, 0, 0.5 }), 0.0);
+  EXPECT_LT(value(*along, { 1.0, 0, 0.4, 0.5 }), 0.0);
+  EXPECT_LT(value(*fixed, { 1.4, 0, 0, 0.5 }), 0.0);
+  EXPECT_GT(value(*fixed, { 1.0, 0, 0.4, 0.5 }), 0.0);
+  // A path straight up (z): the frame's up switches to y, and the cigar lies along z.
+  path.points = { { 0, 0, 0 }, { 0, 0, 2 } };
+  path.orientation = SweepPath::Orientation::Tangent;
+  const auto up = sweep_model(kCigar, "cigar", path);
+  ASSERT_TRUE(up);
+  EXPECT_GT(value(*up, { 0, 0, 1.4, 0.5 }), 0.0);
+  EXPECT_LT(value(*up, { 0.4, 0, 1.0, 0.5 }), 0.0);
+}
+
+TEST(SweepText, BadPathsAreRefusedWithTheReason)
+{
+  const auto refused = [](const std::string& name, const std::string& profile, SweepPath path)
+  {
+    const frep::project::SweepText t = frep::project::write_sweep(name, profile, 1, path);
+    EXPECT_FALSE(t.ok());
+    EXPECT_TRUE(t.text.empty());
+    return t.diagnostics.empty() ? std::string() : t.diagnostics.front().message;
+  };
+  SweepPath one;
+  one.points = { { 0, 0, 0 } };
+  EXPECT_NE(refused("s", "ball", one).find("at least 2 points"), std::string::npos);
+  SweepPath two_closed;
+  two_closed.points = { { 0, 0, 0 }, { 1, 0, 0 } };
+  two_closed.closed = true;
+  EXPECT_NE(refused("s", "ball", two_closed).find("closed path needs at least 3"), std::string::npos);
+  SweepPath repeated;
+  repeated.points = { { 0, 0, 0 }, { 0, 0, 0 }, { 1, 0, 0 } };
+  EXPECT_NE(refused("s", "ball", repeated).find("are the same"), std::string::npos);
+  SweepPath infinite;
+  infinite.points = { { 0, 0, 0 }, { INFINITY, 0, 0 } };
+  EXPECT_NE(refused("s", "ball", infinite).find("not finite"), std::string::npos);
+  EXPECT_NE(refused("2s", "ball", two_closed).find("identifiers"), std::string::npos);
+  EXPECT_NE(refused("ball", "ball", one).find("named like its profile"), std::string::npos);
+}
+
+} // namespace

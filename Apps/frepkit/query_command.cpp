@@ -20,10 +20,11 @@ CLI::App* add_query_command(CLI::App& app, QueryOptions& o)
   CLI::App* cmd = app.add_subcommand("query",
     "Questions asked of space-time: 'contact A.hf B.hf' (when two moving solids first touch, "
     "and where), 'presence MODEL.hf --at P' (when a point is inside), 'volume MODEL.hf' (the "
-    "section's volume or area over time). One coordinate is time (--time)");
-  cmd->add_option("question", o.question, "contact, presence or volume")
+    "section's volume or area over time), 'topology MODEL.hf' (where the section's pieces or "
+    "genus change). One coordinate is time (--time)");
+  cmd->add_option("question", o.question, "contact, presence, volume or topology")
     ->required()
-    ->check(CLI::IsMember({ "contact", "presence", "volume" }));
+    ->check(CLI::IsMember({ "contact", "presence", "volume", "topology" }));
   cmd->add_option("models", o.models, "the model (contact: two models)")->required();
   cmd->add_option("--object", o.object, "the object of every model (default: my_model, else the first)");
   cmd->add_option("-a,--parameters", o.parameters, "a[] values")->delimiter(',');
@@ -34,13 +35,14 @@ CLI::App* add_query_command(CLI::App& app, QueryOptions& o)
        "(x1=-1:1,x2=-1:1,... or all minima then all maxima)")
     ->delimiter(',');
   cmd->add_option("--at", o.at, "presence: the point, its coordinates besides time")->delimiter(',');
-  cmd->add_option("--time-tolerance", o.time_tolerance, "how exactly times are located")
+  cmd->add_option("--time-tolerance", o.time_tolerance,
+       "how exactly times are located (contact, presence; topology: its events)")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
-  cmd->add_option("--steps", o.steps, "volume: times in the table, ends included")
+  cmd->add_option("--steps", o.steps, "volume, topology: times sampled, ends included")
     ->capture_default_str()
     ->check(CLI::Range(1, 100000));
-  cmd->add_option("--grid", o.grid, "volume: samples per axis of the section's mesh")
+  cmd->add_option("--grid", o.grid, "volume, topology: samples per axis of the section's mesh")
     ->capture_default_str()
     ->check(CLI::Range(2, 2048));
   cmd->add_option("-o,--output", o.output, "where the answer goes ('-': standard output)")
@@ -104,6 +106,31 @@ std::string coordinates(const std::vector<double>& x)
   return out;
 }
 
+std::string pieces(std::size_t components, long long genus)
+{
+  return std::to_string(components) + (components == 1 ? " piece" : " pieces") + " of genus " +
+         std::to_string(genus);
+}
+
+void topology(const QueryOptions& o, const Asked& asked,
+  const frep::project::SpaceTimeOptions& options, std::ostream& out)
+{
+  const frep::project::TopologyTrack track = frep::project::topology_events(*asked.models.front().model,
+    asked.time, space_box(o, asked), o.steps, o.grid, o.time_tolerance, options);
+  if (!track.ok())
+    throw UserError("query topology: " + track.error);
+  const std::string t = "x" + std::to_string(asked.time.coordinate);
+  out << t << ",components,genus\n";
+  for (const frep::project::TopologySample& s : track.samples)
+    out << format_short(s.time) << "," << s.components << "," << s.genus << "\n";
+  if (track.events.empty())
+    out << "no change of topology between the samples\n";
+  for (const frep::project::TopologyEvent& e : track.events)
+    out << "changes for " << t << " in [" << format_short(e.before) << ", "
+        << format_short(e.after) << "]: " << pieces(e.components_before, e.genus_before) << " -> "
+        << pieces(e.components_after, e.genus_after) << "\n";
+}
+
 void answer(const QueryOptions& o, const Asked& asked, std::ostream& out)
 {
   frep::project::SpaceTimeOptions options;
@@ -142,6 +169,8 @@ void answer(const QueryOptions& o, const Asked& asked, std::ostream& out)
           << format_short(i.hi) << "]\n";
     return;
   }
+  if (o.question == "topology")
+    return topology(o, asked, options, out);
   const frep::project::SectionMeasures m = frep::project::section_measures(
     model, asked.time, space_box(o, asked), o.steps, o.grid, options);
   if (!m.ok())

@@ -3,6 +3,7 @@
 //   contact A.hf B.hf   the first time the two moving solids share a point of --box, and where
 //   presence MODEL.hf   the time intervals during which the point --at is inside
 //   volume MODEL.hf     the section's volume (or area) at --steps times, a table (CSV with -o)
+//   topology MODEL.hf   the section's pieces and genus at --steps times, and where they change
 #pragma once
 
 #include "user_inputs.h"

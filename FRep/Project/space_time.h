@@ -11,7 +11,8 @@
 //  - presence: the intervals of t during which a point is inside (F >= 0), each end located to
 //    `time_tolerance` (subdivision of t with the region walker's enclosures).
 //  - section_measures: the volume (3 free coordinates) or area (2) of the section at each of a
-//    table of times, from a watertight mesh (contour) of it on a grid.
+//    table of times, from a watertight mesh (contour) of it on a grid, and its pieces (genus);
+//  - topology_events: where along time those pieces or the genus change, by bisection.
 #pragma once
 
 #include "Compiler/model.h"
@@ -70,6 +71,7 @@ struct SectionMeasure
   double time = 0.0;
   double measure = 0.0;       ///< volume (3-D section) or area (2-D)
   std::size_t components = 0; ///< connected pieces of its surface (contour loops in 2-D)
+  long long genus = 0;        ///< 3-D: the surface's genus summed over its pieces (0 in 2-D)
 };
 
 struct SectionMeasures
@@ -86,5 +88,38 @@ struct SectionMeasures
 /// (squares) at that grid.
 SectionMeasures section_measures(const Model& model, const CoordinateRange& time,
   const std::vector<Interval>& space, int steps, int samples, const SpaceTimeOptions& options = {});
+
+/// A change of the section's topology between two times `before` < `after`, at most the
+/// resolution apart.
+struct TopologyEvent
+{
+  double before = 0.0, after = 0.0;
+  std::size_t components_before = 0, components_after = 0;
+  long long genus_before = 0, genus_after = 0;
+};
+
+struct TopologySample
+{
+  double time = 0.0;
+  std::size_t components = 0;
+  long long genus = 0;
+};
+
+struct TopologyTrack
+{
+  std::string error;
+  std::vector<TopologySample> samples; ///< at `steps` times, both ends included
+  std::vector<TopologyEvent> events;   ///< in time order
+  bool ok() const { return error.empty(); }
+};
+
+/// Where the section's topology (pieces, and genus for 3-D sections) changes along time (issue
+/// 29, item 5: a map of the topology): sampled at `steps` times, each change between two samples
+/// located by bisection to `resolution`. The topology is the section's mesh's (contour's) on
+/// `samples` points per axis of `space`, so a feature finer than the grid is not seen; a change
+/// and its undoing between two samples is missed.
+TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
+  const std::vector<Interval>& space, int steps, int samples, double resolution,
+  const SpaceTimeOptions& options = {});
 
 } // namespace frep::project

@@ -89,6 +89,15 @@ run "a 4-D profile" 1 "$frepkit" sweep "$work/moving.hf" --path "0,0,0;1,0,0" -o
 expect_in "says 3-D" "$err" "a profile is 3-D"
 [ ! -e "$work/kept.hf" ] && pass "refused sweeps wrote nothing" || fail "a refused sweep wrote a file"
 
+# Two balls parting at x4 = 0.5: the topology's event.
+cat > "$work/parting.hf" <<'HF'
+parting(x[4], a[1]) { parting = max(0.25 - ((x[1]-x[4])^2 + x[2]^2 + x[3]^2), 0.25 - ((x[1]+x[4])^2 + x[2]^2 + x[3]^2)); }
+HF
+run "query topology" 0 "$frepkit" query topology "$work/parting.hf" --time x4=0.2:0.8 --steps 4 \
+  --box x1=-2:2,x2=-1:1,x3=-1:1 --grid 65
+expect_in "the event" "$out" "changes for x4 in [0.5, 0.50009765625]"
+expect_in "what changed" "$out" "1 piece of genus 0 -> 2 pieces of genus 0"
+
 echo "keep me" > "$work/kept.stl"
 run "project along a coordinate the model lacks" 1 "$frepkit" mesh "$work/moving.hf" \
   --project x5=0:1 -o "$work/kept.stl"

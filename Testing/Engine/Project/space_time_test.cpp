@@ -113,6 +113,48 @@ TEST(SpaceTime, SectionVolumeAndAreaFollowTheClosedForms)
   EXPECT_NEAR(areas.table[2].measure, 2 * M_PI * 0.25, 0.01);
 }
 
+TEST(SpaceTime, TopologyEventsOfAnalyticFamiliesAreFoundAtTheAnalyticTime)
+{
+  // Two balls of radius 0.5 at +-x4 (max: their union): one piece until they part at x4 = 0.5.
+  const auto parting = model_of("parting(x[4], a[1]) { parting = max(0.25 - ((x[1]-x[4])^2 + x[2]^2"
+                                " + x[3]^2), 0.25 - ((x[1]+x[4])^2 + x[2]^2 + x[3]^2)); }");
+  const double h = 4.0 / 64; // the grid's spacing
+  const auto split = frep::project::topology_events(
+    *parting, { 4, 0.2, 0.8 }, { { -2, 2 }, { -1, 1 }, { -1, 1 } }, 4, 65, 1e-4);
+  ASSERT_TRUE(split.ok()) << split.error;
+  ASSERT_EQ(split.events.size(), 1u);
+  const auto& e = split.events[0];
+  EXPECT_EQ(e.components_before, 1u);
+  EXPECT_EQ(e.components_after, 2u);
+  EXPECT_LE(e.after - e.before, 1e-4);
+  EXPECT_NEAR(e.after, 0.5, h);
+  EXPECT_EQ(split.samples.front().components, 1u);
+  EXPECT_EQ(split.samples.back().components, 2u);
+
+  // A torus of ring radius 0.6 whose tube grows as 0.3 + 0.6 x4: its hole closes (genus 1 -> 0)
+  // when the tube reaches the ring, x4 = 0.5.
+  const auto closing = model_of("closing(x[4], a[1]) { r = 0.3 + 0.6*x[4];"
+                                " closing = r*r - ((sqrt(x[1]^2 + x[2]^2) - 0.6)^2 + x[3]^2); }");
+  const double g = 3.2 / 80;
+  const auto shut = frep::project::topology_events(
+    *closing, { 4, 0.0, 1.0 }, { { -1.6, 1.6 }, { -1.6, 1.6 }, { -1.2, 1.2 } }, 5, 81, 1e-3);
+  ASSERT_TRUE(shut.ok()) << shut.error;
+  ASSERT_EQ(shut.events.size(), 1u);
+  EXPECT_EQ(shut.events[0].genus_before, 1);
+  EXPECT_EQ(shut.events[0].genus_after, 0);
+  EXPECT_EQ(shut.events[0].components_after, 1u);
+  EXPECT_NEAR(shut.events[0].after, 0.5, 2 * g / 0.6); // the hole's radius 0.3 - 0.6 (x4 - 0.5)
+  std::cout << "[ topology ] parted in [" << e.before << ", " << e.after << "], hole closed in ["
+            << shut.events[0].before << ", " << shut.events[0].after << "]\n";
+
+  EXPECT_NE(frep::project::topology_events(*parting, { 4, 0, 1 }, { { -2, 2 }, { -1, 1 }, { -1, 1 } },
+              1, 17, 1e-3).error.find("at least two times"),
+    std::string::npos);
+  EXPECT_NE(frep::project::topology_events(*parting, { 4, 0, 1 }, { { -2, 2 }, { -1, 1 }, { -1, 1 } },
+              3, 17, 0).error.find("resolution must be > 0"),
+    std::string::npos);
+}
+
 TEST(SpaceTime, BadRequestsGetClearErrors)
 {
   const auto left = model_of(kLeft);
@@ -133,7 +175,7 @@ TEST(SpaceTime, BadRequestsGetClearErrors)
     std::string::npos);
   const auto five = model_of("five(x[5], a[1]) { five = 1; }");
   EXPECT_NE(frep::project::section_measures(*five, { 5, 0, 1 }, { { 0, 1 }, { 0, 1 }, { 0, 1 }, { 0, 1 } }, 2, 8)
-              .error.find("2 or 3 coordinates"),
+              .error.find("2 or 3 coordinates besides time"),
     std::string::npos);
 }
 

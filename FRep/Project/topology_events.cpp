@@ -1,0 +1,89 @@
+#include "Project/detail/section_shape.h"
+#include "Project/detail/space_time_checks.h"
+#include "Project/space_time.h"
+
+#include <cmath>
+#include <functional>
+
+namespace frep::project
+{
+namespace
+{
+
+struct Shape
+{
+  std::size_t components = 0;
+  long long genus = 0;
+  bool operator==(const Shape&) const = default;
+};
+
+// Bisection of [a, b], whose ends have different shapes, down to `resolution`: the change
+// nearest to a (a shape in between that is neither end's is the new b).
+TopologyEvent locate(double a, Shape at_a, double b, Shape at_b, double resolution,
+  const std::function<Shape(double)>& shape_at)
+{
+  while (b - a > resolution)
+  {
+    const double m = a + 0.5 * (b - a);
+    const Shape s = shape_at(m);
+    if (s == at_a)
+      a = m;
+    else
+    {
+      b = m;
+      at_b = s;
+    }
+  }
+  return { a, b, at_a.components, at_b.components, at_a.genus, at_b.genus };
+}
+
+} // namespace
+
+TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
+  const std::vector<Interval>& space, int steps, int samples, double resolution,
+  const SpaceTimeOptions& options)
+{
+  TopologyTrack track;
+  track.error = detail::check_sections(model, time, space, steps, samples);
+  if (track.error.empty() && steps < 2)
+    track.error = "the topology along time needs at least two times";
+  if (track.error.empty() && (!(resolution > 0.0) || !std::isfinite(resolution)))
+    track.error = "the resolution must be > 0";
+  if (!track.error.empty())
+    return track;
+  const GridSpec grid = detail::section_grid(space, samples);
+  std::string error;
+  const auto shape_at = [&](double t)
+  {
+    const detail::SectionShape s =
+      detail::section_shape(model, time.coordinate, t, grid, options.parameters);
+    if (!s.error.empty() && error.empty())
+      error = s.error;
+    return Shape{ s.components, s.genus };
+  };
+  double previous_t = time.lo;
+  Shape previous = shape_at(previous_t);
+  track.samples.push_back({ previous_t, previous.components, previous.genus });
+  for (int i = 1; i < steps && error.empty(); ++i)
+  {
+    const double t = time.lo + (time.hi - time.lo) * (i / double(steps - 1));
+    const Shape now = shape_at(t);
+    track.samples.push_back({ t, now.components, now.genus });
+    // Several changes between two samples: located one after the other, nearest first.
+    double from = previous_t;
+    Shape from_shape = previous;
+    while (!(now == from_shape) && error.empty())
+    {
+      const TopologyEvent e = locate(from, from_shape, t, now, resolution, shape_at);
+      track.events.push_back(e);
+      from = e.after;
+      from_shape = Shape{ e.components_after, e.genus_after };
+    }
+    previous_t = t;
+    previous = now;
+  }
+  track.error = error;
+  return track;
+}
+
+} // namespace frep::project

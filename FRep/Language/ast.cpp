@@ -1,26 +1,15 @@
 #include "ast.h"
 
+#include "Language/names.h"
+
 #include <algorithm>
 #include <cctype>
 
 namespace frep::ast
 {
-namespace
-{
-
-std::string lower(std::string_view text)
-{
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-} // namespace
-
 int find_object(const Program& program, std::string_view name)
 {
-  const std::string wanted = lower(name);
+  const std::string wanted = lower_case(name);
   for (std::size_t i = 0; i < program.objects.size(); ++i)
   {
     if (program.objects[i].name == wanted)
@@ -47,7 +36,7 @@ int select_object(const Program& program, std::string_view name, NameMatch match
   {
     return -1;
   }
-  const std::string wanted = match == NameMatch::IgnoreCase ? lower(name) : std::string(name);
+  const std::string wanted = match == NameMatch::IgnoreCase ? lower_case(name) : std::string(name);
   for (std::size_t i = static_cast<std::size_t>(program.first_own_object);
        i < program.objects.size(); ++i)
   {

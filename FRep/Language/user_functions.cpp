@@ -1,5 +1,7 @@
 #include "user_functions.h"
 
+#include "Language/names.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -7,24 +9,6 @@ namespace frep
 {
 namespace
 {
-
-std::string lower(std::string_view s)
-{
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-bool valid_name(std::string_view name)
-{
-  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name.front())))
-  {
-    return false;
-  }
-  return std::all_of(name.begin(), name.end(),
-    [](unsigned char c) { return std::isalnum(c) || c == '_'; });
-}
 
 // Words the lexer keeps for itself: a function named so could never be called.
 bool reserved(std::string_view key)
@@ -70,12 +54,12 @@ std::string user_function_signature(const UserFunction& function)
 std::string UserFunctionRegistry::add(UserFunction function)
 {
   const std::string& name = function.name;
-  if (!valid_name(name))
+  if (!is_identifier(name))
   {
     return "user function '" + name +
       "': a name is letters, digits and '_', starting with a letter";
   }
-  const std::string key = lower(name);
+  const std::string key = lower_case(name);
   if (reserved(key))
   {
     return "user function '" + name + "': the name is a word of the language";
@@ -126,7 +110,7 @@ std::string UserFunctionRegistry::add(UserFunction function)
 
 std::optional<int> UserFunctionRegistry::find(std::string_view name) const
 {
-  const std::string key = lower(name);
+  const std::string key = lower_case(name);
   const auto it = std::find(keys_.begin(), keys_.end(), key);
   if (it == keys_.end())
   {

@@ -2,6 +2,7 @@
 
 #include "Morph/detail/key_weight_check.h"
 #include "Morph/detail/weight_text.h"
+#include "Language/names.h"
 #include "Shapes/shape_functions.h"
 
 #include <algorithm>
@@ -38,24 +39,6 @@ struct KeyFile
 Diagnostic error(const std::string& file, SourceLocation at, std::string message)
 {
   return Diagnostic{ file, at, std::move(message) };
-}
-
-bool valid_name(const std::string& name)
-{
-  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0])))
-    return false;
-  return std::all_of(name.begin(),
-    name.end(),
-    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
-
-std::string lower(std::string s)
-{
-  std::transform(s.begin(),
-    s.end(),
-    s.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
 }
 
 // Loads each distinct key file once and picks every key's object.
@@ -119,7 +102,7 @@ std::string lattice_text(const std::vector<int>& lattice)
 bool check_spec(const MorphSpec& spec, std::vector<Diagnostic>& diagnostics)
 {
   const std::string here = "metamorphosis";
-  if (!valid_name(spec.name))
+  if (!is_identifier(spec.name))
     diagnostics.push_back(error(here,
       {},
       "'" + spec.name +
@@ -182,7 +165,7 @@ bool check_keys(const MorphSpec& spec,
             " too: the key files' objects need different names"));
     }
   }
-  for (const std::string& written : { lower(spec.name), std::string("my_model") })
+  for (const std::string& written : { lower_case(spec.name), std::string("my_model") })
   {
     if (const auto it = owner.find(written); it != owner.end())
       diagnostics.push_back(error(it->second,
@@ -231,7 +214,7 @@ std::string header(const MorphSpec& spec,
   if (spec.timing.curve != TimingCurve::Linear)
     out += comment(" Timed: " + timing_name(spec.timing) + " between neighbouring keys.");
   for (const KeyWeight& weight : spec.key_weights)
-    out += comment(" Key weight of " + lower(weight.key) + ": " + weight.expression);
+    out += comment(" Key weight of " + lower_case(weight.key) + ": " + weight.expression);
   if (spec.normalisation == Normalisation::Distance)
   {
     out += comment(
@@ -298,7 +281,7 @@ bool measure_keys(const MorphSpec& spec,
   std::map<std::pair<std::string, std::string>, Result> measured;
   for (const Key& key : spec.keys)
   {
-    const auto id = std::make_pair(key.file, lower(key.object));
+    const auto id = std::make_pair(key.file, lower_case(key.object));
     auto found = measured.find(id);
     if (found == measured.end())
     {
@@ -411,7 +394,7 @@ MorphText write_morph(const MorphSpec& spec, KeyPlacement placement, const LoadO
     for (const KeyFile& file : files)
       result.libraries.push_back(file.path);
   }
-  const std::string name = lower(spec.name);
+  const std::string name = lower_case(spec.name);
   const std::string head =
     "(x[" + std::to_string(result.x_dim) + "], a[" + std::to_string(a_dim) + "])";
   weight_text::Body body;

@@ -1,6 +1,7 @@
 #include "Project/projection.h"
 
 #include "Eval/detail/object_pool.h"
+#include "Language/names.h"
 #include "Shapes/tape_function.h"
 
 #include <algorithm>
@@ -124,10 +125,7 @@ namespace
 // The object's name: the source's, if it is a plain identifier, with "_projection".
 std::string projected_name(const std::string& source)
 {
-  const bool plain = !source.empty() && std::isalpha(static_cast<unsigned char>(source[0])) &&
-                     std::all_of(source.begin(), source.end(),
-                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-  return plain ? source + "_projection" : std::string("projection");
+  return is_identifier(source) ? source + "_projection" : std::string("projection");
 }
 
 // The wrapper: `name(x[n or m], a[1]) { name = frep_projection(kept x); }`.

@@ -1,5 +1,7 @@
 #include "Project/sweep_text.h"
 
+#include "Language/names.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -10,16 +12,6 @@ namespace
 {
 
 using Point = std::array<double, 3>;
-
-bool identifier(const std::string& s)
-{
-  if (s.empty() || !std::isalpha(static_cast<unsigned char>(s[0])))
-    return false;
-  for (const char c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
-      return false;
-  return true;
-}
 
 // A number as a HyperFun literal (fixed notation: an exponent is a syntax error).
 std::string literal(double v)
@@ -142,7 +134,7 @@ std::string body(const std::string& name, const std::string& profile, const Swee
 std::string check(const std::string& name, const std::string& profile, int a_dim,
   const SweepPath& path)
 {
-  if (!identifier(name) || !identifier(profile))
+  if (!is_identifier(name) || !is_identifier(profile))
     return "the sweep's and the profile's names must be identifiers (got '" + name + "', '" +
            profile + "')";
   if (name == profile)

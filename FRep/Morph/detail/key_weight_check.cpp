@@ -1,5 +1,7 @@
 #include "Morph/detail/key_weight_check.h"
 
+#include "Language/names.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -7,15 +9,6 @@ namespace frep::morph::detail
 {
 namespace
 {
-
-std::string lower(std::string s)
-{
-  std::transform(s.begin(),
-    s.end(),
-    s.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 // Compiles the expression in the statement the text writes (weight_text.cpp's
 // key_weight_statements), inside an object of the morph's x[] and a[] with mx[1..d]; a problem
@@ -81,7 +74,7 @@ std::vector<std::string> key_weight_expressions(const MorphSpec& spec,
   std::vector<std::string> named;
   for (const KeyWeight& weight : spec.key_weights)
   {
-    const std::string key = lower(weight.key);
+    const std::string key = lower_case(weight.key);
     if (std::find(named.begin(), named.end(), key) != named.end())
     {
       diagnostics.push_back(

@@ -26,6 +26,12 @@ void add_projection_options(CLI::App* command, ProjectionInput& input)
       "The projection's values are within this of the maximum (its sign exact beyond it)")
     ->capture_default_str()
     ->check(CLI::PositiveNumber);
+  command
+    ->add_option("--project-band",
+      input.band,
+      "Beyond +-band (in the model's units) only the sign of a projected value is kept: faster; "
+      "'inf' keeps every value within the tolerance")
+    ->capture_default_str();
 }
 
 namespace
@@ -75,6 +81,9 @@ frep::LoadedModel apply_projection(frep::LoadedModel loaded, const ProjectionInp
   const std::vector<frep::project::CoordinateRange> axes = parse_along(input);
   frep::project::ProjectionOptions options;
   options.tolerance = input.tolerance;
+  options.band = input.band;
+  if (!(input.band > input.tolerance)) // NaN too
+    throw UserError("--project-band must be greater than --project-tolerance");
   options.parameters = parameters;
   options.keep_coordinates = true;
   frep::LoadedModel projected = frep::project::project(loaded.model, axes, options);

@@ -21,6 +21,7 @@ struct ProjectionInput
 {
   std::string along;         ///< --project, e.g. "x4=0:1"; empty: no projection
   double tolerance = 1e-4;   ///< --project-tolerance
+  double band = 0.1;         ///< --project-band
 };
 
 void add_projection_options(CLI::App* command, ProjectionInput& input);

@@ -108,6 +108,13 @@ run "a bad --project" 1 "$frepkit" mesh "$work/moving.hf" --project x4 -o "$work
 expect_in "says the syntax" "$err" "COORDINATE=LO:HI"
 run "a tolerance <= 0" 1 "$frepkit" mesh "$work/moving.hf" --project x4=0:1 \
   --project-tolerance 0 -o "$work/kept.stl"
+run "a band below the tolerance" 1 "$frepkit" mesh "$work/moving.hf" --project x4=0:1 \
+  --project-band 1e-5 -o "$work/kept.stl"
+expect_in "says why" "$err" "--project-band must be greater than --project-tolerance"
+if run "mesh the sweep with every value exact" 0 "$frepkit" mesh "$work/moving.hf" --project x4=0:1 \
+  --project-band inf "${box[@]}" --grid 32 -o "$work/exact.stl" -q; then
+  run "it is closed too" 0 "$check" "$work/exact.stl" --closed
+fi
 [ "$(cat "$work/kept.stl")" == "keep me" ] && pass "failed runs left the output alone" ||
   fail "a failed run changed the output"
 run "contact with one model" 1 "$frepkit" query contact "$work/left.hf" --time x4=0:1 --box -1,1,-1,1,-1,1

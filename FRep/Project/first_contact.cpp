@@ -1,3 +1,4 @@
+#include "Project/detail/box_split.h"
 #include "Project/detail/space_time_checks.h"
 #include "Project/space_time.h"
 
@@ -27,29 +28,17 @@ struct Pending
 // Boxes smaller than this fraction of the search's range on every axis are not split.
 constexpr double kSmallest = 0x1p-24;
 
-// The axis to split among [first, box.size()): the widest relative to its range; -1 when every
-// one is as small as boxes get.
+// The axis to split among [first, box.size()), as an index of the whole box; -1 when every one
+// is as small as boxes get.
 int widest_axis(const std::vector<Interval>& box, const std::vector<Interval>& whole,
   std::size_t first)
 {
-  int axis = -1;
-  double widest = kSmallest;
-  for (std::size_t i = first; i < box.size(); ++i)
-  {
-    const double range = whole[i].hi - whole[i].lo;
-    if (range > 0.0 && (box[i].hi - box[i].lo) / range > widest)
-    {
-      widest = (box[i].hi - box[i].lo) / range;
-      axis = static_cast<int>(i);
-    }
-  }
-  return axis;
+  const int axis = detail::widest_axis(std::span<const Interval>(box).subspan(first),
+    std::span<const Interval>(whole).subspan(first), kSmallest);
+  return axis < 0 ? -1 : axis + static_cast<int>(first);
 }
 
-double centre(const Interval& i)
-{
-  return i.lo == i.hi ? i.lo : i.lo + 0.5 * (i.hi - i.lo);
-}
+using detail::centre;
 
 // The search over I = A & B (t first): a box is dropped when I's enclosure is below 0. A box
 // thinner in t than the tolerance is decided at once by the projector (a depth-first search of

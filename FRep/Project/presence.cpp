@@ -61,8 +61,8 @@ Presence presence(const Model& model, const CoordinateRange& time, std::vector<d
   if (result.error.empty() && static_cast<int>(at.size()) != model.x_dim())
     result.error = "the point has " + std::to_string(at.size()) + " coordinates, " +
                    model.name() + " has x[" + std::to_string(model.x_dim()) + "]";
-  for (const double v : at)
-    if (result.error.empty() && !std::isfinite(v) && &v != &at[time.coordinate - 1])
+  for (std::size_t i = 0; result.error.empty() && i < at.size(); ++i)
+    if (!std::isfinite(at[i]) && static_cast<int>(i) != time.coordinate - 1) // time's is unread
       result.error = "the point's coordinates must be finite";
   if (result.error.empty())
     result.error = detail::check_tolerances(options);

@@ -1,6 +1,7 @@
 #include "Project/projector.h"
 
 #include "Eval/gradient_evaluator.h"
+#include "Project/detail/box_split.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +21,7 @@ constexpr std::size_t kMaxSeeds = 32;
 // has not shrunk to the tolerance by then will not (opaque calls, NaN).
 constexpr double kMinRelativeWidth = 0x1p-30;
 
-// A degenerate interval's centre is its value, sign of zero included (-0 + 0 would be +0, and
-// atan2 tells them apart).
-double centre(const Interval& i)
-{
-  return i.lo == i.hi ? i.lo : i.lo + 0.5 * (i.hi - i.lo);
-}
+using detail::centre;
 
 } // namespace
 
@@ -39,6 +35,7 @@ struct Projector::Search
   std::vector<const double*> pointers;
   double best = 0.0;                         // the search's lower bound: F at best_at
   std::vector<double> best_at;
+  std::vector<double> gradient_inputs, gradient_outputs; // gradient()'s scratch
   std::size_t boxes = 0;
   bool resolved = true;
   // The question asked: stop once best reaches stop_at, and skip the boxes whose enclosure is
@@ -105,23 +102,10 @@ void Projector::set_ranges(std::span<const Interval> ranges)
 namespace
 {
 
-// The eliminated axis to split: the widest relative to its range; -1 when every one is at the
-// smallest width (or degenerate).
+// The eliminated axis to split (an index into the eliminated inputs), or -1.
 int split_axis(std::span<const Interval> box, std::span<const Interval> ranges, std::size_t kept)
 {
-  int axis = -1;
-  double widest = kMinRelativeWidth;
-  for (std::size_t e = 0; e < ranges.size(); ++e)
-  {
-    const double range = ranges[e].hi - ranges[e].lo;
-    const Interval& b = box[kept + e];
-    if (range > 0.0 && (b.hi - b.lo) / range > widest)
-    {
-      widest = (b.hi - b.lo) / range;
-      axis = static_cast<int>(e);
-    }
-  }
-  return axis;
+  return detail::widest_axis(box.subspan(kept), ranges, kMinRelativeWidth);
 }
 
 } // namespace
@@ -330,9 +314,12 @@ IntervalResult Projector::enclose(std::span<const Interval> kept)
 double Projector::gradient(std::span<const double> kept, std::span<double> gradient)
 {
   const Maximum m = maximise(kept);
-  std::vector<double> inputs(kept.begin(), kept.end());
+  // The search's scratch (no allocation per point: the mesher asks this for every normal).
+  std::vector<double>& inputs = search_->gradient_inputs;
+  std::vector<double>& full = search_->gradient_outputs;
+  inputs.assign(kept.begin(), kept.end());
   inputs.insert(inputs.end(), m.at.begin(), m.at.end());
-  std::vector<double> full(inputs.size());
+  full.resize(inputs.size());
   search_->gradients.evaluate(inputs, full);
   std::copy_n(full.begin(), std::min(gradient.size(), kept_), gradient.begin());
   return m.value;

@@ -25,7 +25,7 @@ namespace
 {
 using Type = frep::mapping::Channel::Type;
 constexpr std::array kTypes{ Type::World, Type::Dynamic, Type::Spreadsheet, Type::Fixed,
-  Type::Colour, Type::Transparency, Type::Transformation, Type::Audio };
+  Type::Colour, Type::Transparency, Type::Transformation, Type::Audio, Type::Projected };
 constexpr int kCoordinateColumn = 0, kTypeColumn = 1, kLoColumn = 2, kHiColumn = 3;
 }
 
@@ -41,6 +41,7 @@ QString MappingEditor::typeName(Type type)
     case Type::Transparency: return "transparency";
     case Type::Transformation: return "transformation";
     case Type::Audio: return "audio";
+    case Type::Projected: return "projected";
   }
   return {};
 }

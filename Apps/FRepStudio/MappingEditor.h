@@ -1,6 +1,6 @@
 // The mapping editor: the channels of a multimedia mapping (Documentation/mapping-file.md), one
 // row per channel: its coordinate, type (world, dynamic, spreadsheet, fixed, colour,
-// transparency, transformation, audio) and range. Files are read and written by the Mapping
+// transparency, transformation, audio, projected) and range. Files are read and written by the Mapping
 // module's own load_mapping / save_mapping, so they are the same JSON files as `frepkit map`'s,
 // and every field the editor does not show is kept as it was read.
 #pragma once

@@ -453,6 +453,9 @@ void check_channel_keys(Reader& r, const Json& j, const std::string& place, Chan
     case Channel::Type::Audio:
       r.object(j, place, { "type", "range", "curve", "target", "parameter", "voice" });
       break;
+    case Channel::Type::Projected: // no curve, no target: nothing is mapped
+      r.object(j, place, { "type", "range", "tolerance" });
+      break;
   }
 }
 
@@ -559,6 +562,27 @@ void read_fixed_channel(Reader& r, const Json& j, const std::string& place, Chan
     if (auto x = r.number(*v, join(place, "value")))
     {
       c.value = *x;
+    }
+  }
+}
+
+// "projected": the tolerance (optional, > 0).
+void read_projected_channel(Reader& r, const Json& j, const std::string& place, Channel& c)
+{
+  const auto t = j.find("tolerance");
+  if (t == j.end())
+  {
+    return;
+  }
+  if (auto x = r.number(*t, join(place, "tolerance")))
+  {
+    if (*x > 0.0)
+    {
+      c.tolerance = *x;
+    }
+    else
+    {
+      r.error(join(place, "tolerance"), "must be > 0");
     }
   }
 }
@@ -673,6 +697,9 @@ std::optional<Channel> read_channel(Reader& r,
       break;
     case Channel::Type::Audio:
       read_audio_channel(r, j, place, c);
+      break;
+    case Channel::Type::Projected:
+      read_projected_channel(r, j, place, c);
       break;
     case Channel::Type::Dynamic:
       break;

@@ -73,6 +73,9 @@ Json channel_json(const Channel& c, WorldSystem system)
     case Channel::Type::Fixed:
       j["value"] = c.value;
       break;
+    case Channel::Type::Projected:
+      j["tolerance"] = c.tolerance;
+      break;
     case Channel::Type::Colour:
       j["colormap"] = c.colormap;
       j["applies_to"] = name_of(photometric_targets, c.applies_to);

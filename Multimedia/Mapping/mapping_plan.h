@@ -69,6 +69,16 @@ struct VertexColouring
   std::string colormap; ///< named map or "red"/"green"/"blue"
 };
 
+/// A coordinate eliminated by projection (channel type "projected"): the sections are cut from
+/// the model projected over `range` (Scene/section_model.h), inside where some value of the
+/// coordinate in the range puts the point inside.
+struct ProjectedCoordinate
+{
+  int coordinate = -1; ///< model index
+  Interval range;
+  double tolerance = 1e-4; ///< the projection's values are within this of the maximum
+};
+
 struct Plan
 {
   /// World axis k (0..2) is driven by model coordinate world_coordinates[k]; -1 when only two
@@ -99,6 +109,10 @@ struct Plan
   /// The elementary shape when nothing varies (a mapping of world and fixed coordinates
   /// only), else the first cell or frame: `frepkit map` draws it as shape.png.
   Sample still;
+
+  /// The coordinates eliminated by projection, in model order (empty: none). Their samples'
+  /// values are their ranges' middles, read by nothing once the model is projected.
+  std::vector<ProjectedCoordinate> projected;
 
   VertexColouring vertex_colouring;
   int voice_count = 0; ///< 0: no audio channel, no sound track
@@ -135,7 +149,7 @@ bool world_is_affine(const Plan& plan, std::string* why = nullptr);
 std::array<Interval, 3> curvilinear_box(WorldSystem system, const std::array<Interval, 3>& axes);
 
 /// Resolves `spec` against the model's coordinates: every coordinate must be mapped (world,
-/// dynamic, spreadsheet or fixed), world axes distinct and 2 or 3 of them, ranges of non-zero
+/// dynamic, spreadsheet, fixed or projected), world axes distinct and 2 or 3 of them, ranges of non-zero
 /// width, frames >= 1, a path with >= 2 points over exactly the dynamic coordinates, ...
 /// All problems are reported, not only the first.
 PlanResult make_plan(const Spec& spec, const ModelCoordinates& model);

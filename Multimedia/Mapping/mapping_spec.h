@@ -73,6 +73,7 @@ struct Channel
     Transparency,   ///< opacity (target: opacity interval, default [1, 0.2])
     Transformation, ///< rotation, scaling or translation of the elementary shape
     Audio,          ///< pitch, loudness or timbre of a voice of the sound track
+    Projected,      ///< eliminated: the shape is the union over the range (a projection)
   };
   Type type = Type::Fixed;
 
@@ -92,6 +93,9 @@ struct Channel
 
   // Fixed
   double value = 0.0;
+
+  // Projected: the projection's values are within this of the maximum (FRep/Project)
+  double tolerance = 1e-4;
 
   // Colour
   std::string colormap = "viridis"; ///< a named map, or "red", "green", "blue" (one channel)

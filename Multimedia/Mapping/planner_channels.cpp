@@ -83,6 +83,8 @@ const char* type_name(Channel::Type t)
       return "transformation";
     case Channel::Type::Audio:
       return "audio";
+    case Channel::Type::Projected:
+      return "projected";
   }
   return "?";
 }
@@ -175,9 +177,21 @@ const Resolved* Planner::find(std::size_t i, Channel::Type type) const
   return nullptr;
 }
 
-// Each coordinate is free (world) or gets a value per sample: fixed everywhere, or a
-// spreadsheet value in the cells and/or a dynamic value in the frames (one coordinate may
-// drive both the spreadsheet and the animation, as x4 and x5 of Meta5D do).
+namespace
+{
+
+bool is_placing(Channel::Type t)
+{
+  return t == Channel::Type::World || t == Channel::Type::Dynamic ||
+         t == Channel::Type::Spreadsheet || t == Channel::Type::Fixed ||
+         t == Channel::Type::Projected;
+}
+
+} // namespace
+
+// Each coordinate is free (world), eliminated (projected) or gets a value per sample: fixed
+// everywhere, or a spreadsheet value in the cells and/or a dynamic value in the frames (one
+// coordinate may drive both the spreadsheet and the animation, as x4 and x5 of Meta5D do).
 void Planner::check_placing()
 {
   for (std::size_t i = 0; i < n(); ++i)
@@ -187,8 +201,7 @@ void Planner::check_placing()
     for (const Resolved& r : by_coordinate_[i])
     {
       const Channel::Type t = r.channel->type;
-      if (t != Channel::Type::World && t != Channel::Type::Dynamic &&
-          t != Channel::Type::Spreadsheet && t != Channel::Type::Fixed)
+      if (!is_placing(t))
       {
         continue;
       }
@@ -203,17 +216,35 @@ void Planner::check_placing()
     }
     if (first.empty())
     {
-      error(
-        place, "missing: every coordinate needs a world, dynamic, spreadsheet or fixed channel");
+      error(place,
+        "missing: every coordinate needs a world, dynamic, spreadsheet, fixed or projected "
+        "channel");
       continue;
     }
     const bool world = first.count(Channel::Type::World) != 0;
     const bool fixed = first.count(Channel::Type::Fixed) != 0;
-    if ((world || fixed) && first.size() > 1)
+    const bool projected = first.count(Channel::Type::Projected) != 0;
+    if (projected && by_coordinate_[i].size() > 1)
+    {
+      // Nothing has one value of it: the shape is the union over its whole range.
+      error(place, "a projected coordinate has no value: it takes no other channel");
+    }
+    else if ((world || fixed) && first.size() > 1)
     {
       error(place,
-        world ? "a world coordinate cannot also be dynamic, spreadsheet or fixed"
-              : "a fixed coordinate cannot also be dynamic or spreadsheet");
+        world ? "a world coordinate cannot also be dynamic, spreadsheet, fixed or projected"
+              : "a fixed coordinate cannot also be dynamic, spreadsheet or projected");
+    }
+  }
+}
+
+void Planner::fill_projected()
+{
+  for (std::size_t i = 0; i < n(); ++i)
+  {
+    if (const Resolved* r = find(i, Channel::Type::Projected))
+    {
+      plan().projected.push_back({ static_cast<int>(i), r->range, r->channel->tolerance });
     }
   }
 }

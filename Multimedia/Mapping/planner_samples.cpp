@@ -89,6 +89,13 @@ Sample Planner::base_sample() const
       s.values[i] = r->channel->value;
     }
   }
+  // A projected coordinate's value is read by nothing (the sections are cut from the
+  // projection, which keeps the coordinates' numbers): its range's middle, not NaN (that is a
+  // world coordinate's).
+  for (const ProjectedCoordinate& p : result_.plan.projected)
+  {
+    s.values[static_cast<std::size_t>(p.coordinate)] = 0.5 * (p.range.lo + p.range.hi);
+  }
   s.colour = spec_.render.colour;
   s.background = spec_.render.background;
   return s;

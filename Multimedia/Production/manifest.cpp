@@ -10,6 +10,16 @@ std::string manifest_text(const Job& job, const Record& record)
     { "mapping", job.inputs.mapping_label },
     { "object", job.model().name() },
     { "dimension", job.model().x_dim() } };
+  if (!job.plan.projected.empty())
+  {
+    nlohmann::json projected = nlohmann::json::object();
+    for (const ProjectedCoordinate& p : job.plan.projected)
+    {
+      projected[job.coordinates.names[static_cast<std::size_t>(p.coordinate)]] = {
+        { "range", { p.range.lo, p.range.hi } }, { "tolerance", p.tolerance } };
+    }
+    manifest["projected"] = projected; // the sections are the union over these ranges
+  }
   manifest["files"] = record.files;
   nlohmann::json timing = nlohmann::json::object();
   for (const auto& s : record.stages)

@@ -94,7 +94,7 @@ ProductionReport produce(const ProductionInputs& inputs, const ProductionOptions
     report.error = "no model to map";
     return report;
   }
-  Job job{ inputs, options, {}, {}, {} };
+  Job job{ inputs, options, {}, {}, {}, {} };
   if (!plan_job(job, report.diagnostics))
   {
     report.status = ProductionReport::Status::Invalid;

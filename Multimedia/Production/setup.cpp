@@ -1,6 +1,8 @@
 // produce, phases 1-4: the plan, the products, the output directory, the framing.
 #include "Production/detail/phases.h"
 
+#include "Scene/section_model.h"
+
 #include <algorithm>
 #include <thread>
 
@@ -29,6 +31,13 @@ bool plan_job(Job& job, std::vector<std::string>& diagnostics)
     return false;
   }
   job.plan = std::move(planned.plan);
+  SectionModel sectioned = section_model(job.inputs.model, job.plan, job.inputs.parameters);
+  if (!sectioned.ok())
+  {
+    diagnostics.push_back(sectioned.error);
+    return false;
+  }
+  job.sectioned = std::move(sectioned.model);
   return true;
 }
 
@@ -90,7 +99,7 @@ void frame_solids(Job& job, const Products& products, int workers, Record& recor
   run.pool = job.options.pool ? job.options.pool : std::make_shared<ThreadPool>(workers);
   run.cancel = [&job] { return job.stopped(); };
   job.framing =
-    mapping::frame_solids(job.spec().render, job.model(), job.inputs.parameters, job.plan, run);
+    mapping::frame_solids(job.spec().render, job.section_source(), job.inputs.parameters, job.plan, run);
   job.throw_if_stopped();
   const std::size_t samples = 1 + job.plan.cells.size() + job.plan.frames.size();
   record.stages.push_back({ "framing",

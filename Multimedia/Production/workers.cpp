@@ -110,7 +110,7 @@ Workers::Picture Workers::picture(RenderSettings::Method method,
   }
   options.cancel = [this] { return job_.stopped(); };
   options.floor = floor;
-  Picture p = draw_sample(job_.model(),
+  Picture p = draw_sample(job_.section_source(),
     job_.inputs.parameters,
     job_.plan,
     sample,

@@ -32,6 +32,7 @@ inline constexpr Name<Channel::Type> channel_types[] = {
   { "transparency", Channel::Type::Transparency },
   { "transformation", Channel::Type::Transformation },
   { "audio", Channel::Type::Audio },
+  { "projected", Channel::Type::Projected },
 };
 inline constexpr Name<WorldSystem> world_systems[] = {
   { "cartesian", WorldSystem::Cartesian },

@@ -57,6 +57,7 @@ public:
     check_channel_values();
     if (result_.ok())
     {
+      fill_projected();
       fill_cells();
       fill_frames();
       fill_still();
@@ -85,6 +86,8 @@ private:
   // drive both the spreadsheet and the animation, as x4 and x5 of Meta5D do).
   void check_placing();
   void check_channel_values();
+  /// The plan's projected coordinates (before the samples: base_sample reads them).
+  void fill_projected();
   // --- checks of the world, spreadsheet, animation and renderer: planner_checks.cpp
   void check_world();
   void check_spreadsheet();

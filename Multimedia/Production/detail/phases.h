@@ -79,20 +79,24 @@ struct Job
   const ProductionOptions& options;
   ModelCoordinates coordinates;
   Plan plan;
+  /// What the sections are cut from: the model, or its projection when the plan projects
+  /// coordinates (section_model, made by plan_job).
+  std::shared_ptr<const Model> sectioned;
   /// What the one camera of the cells and frames frames (phase 4); empty: the plan's box.
   Framing framing;
   mutable std::atomic<bool> stop_requested{ false }; ///< progress returned false
 
   const Spec& spec() const { return inputs.spec; }
   const Model& model() const { return *inputs.model; }
+  const Model& section_source() const { return *sectioned; }
   /// Whether to stop: `cancel` says so, or `progress` returned false.
   bool stopped() const { return stop_requested || options.cancel_requested(); }
   /// Throws Stopped when stopped(): the check between two pieces of work.
   void throw_if_stopped() const;
 };
 
-/// The plan of the mapping for the model's coordinates x1..xn (hfp's default box); the plan's
-/// errors go into `diagnostics` (false then).
+/// The plan of the mapping for the model's coordinates x1..xn (hfp's default box) and the model
+/// its sections are cut from; the plan's errors go into `diagnostics` (false then).
 bool plan_job(Job& job, std::vector<std::string>& diagnostics);
 
 struct Products

@@ -176,7 +176,7 @@ TEST(MappingJson, UnknownTypeNamesThePlaceAndTheChoices)
   EXPECT_TRUE(has_error(r,
     "coordinates.x2[0].type",
     "unknown type \"wrld\" (expected world, dynamic, spreadsheet, fixed, colour, transparency, "
-    "transformation, audio)"))
+    "transformation, audio, projected)"))
     << format_errors(r.errors);
 }
 

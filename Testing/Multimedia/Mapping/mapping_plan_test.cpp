@@ -262,6 +262,53 @@ TEST(MappingPlan, AttributesAsColours)
   EXPECT_TRUE(r.plan.frames.empty());
 }
 
+// A projected coordinate is eliminated: listed with its range and tolerance, its samples' value
+// the range's middle (read by nothing once the model is projected); the file says so back.
+TEST(MappingPlan, ProjectedCoordinateIsListedAndSavedBack)
+{
+  const std::string json = R"({
+    "coordinates": {
+      "x1": [{ "type": "world", "axis": "x" }], "x2": [{ "type": "world", "axis": "y" }],
+      "x3": [{ "type": "world", "axis": "z" }],
+      "x4": [{ "type": "projected", "range": [0, 0.5], "tolerance": 0.001 }],
+      "x5": [{ "type": "dynamic", "range": [0, 1] }] },
+    "animation": { "duration": 1, "fps": 3 } })";
+  const PlanResult r = plan_of(json, 5);
+  ASSERT_TRUE(r.ok()) << format_errors(r.errors);
+  ASSERT_EQ(r.plan.projected.size(), 1u);
+  EXPECT_EQ(r.plan.projected[0].coordinate, 3);
+  EXPECT_EQ(r.plan.projected[0].range, (Interval{ 0, 0.5 }));
+  EXPECT_EQ(r.plan.projected[0].tolerance, 0.001);
+  ASSERT_EQ(r.plan.frames.size(), 3u);
+  for (const Sample& f : r.plan.frames)
+  {
+    EXPECT_EQ(f.values[3], 0.25);
+    EXPECT_EQ(f.label.find("x4"), std::string::npos) << f.label; // not a varying coordinate
+  }
+  const LoadResult loaded = load_mapping(json);
+  const LoadResult again = load_mapping(save_mapping(loaded.spec));
+  ASSERT_TRUE(again.ok()) << format_errors(again.errors);
+  EXPECT_EQ(again.spec, loaded.spec);
+  EXPECT_TRUE(plan_of(replaced(json, R"(, "tolerance": 0.001)", ""), 5).plan.projected[0].tolerance == 1e-4);
+}
+
+TEST(MappingPlanErrors, ProjectedCoordinateTakesNoOtherChannel)
+{
+  const std::string json = R"({
+    "coordinates": {
+      "x1": [{ "type": "world", "axis": "x" }], "x2": [{ "type": "world", "axis": "y" }],
+      "x3": [{ "type": "world", "axis": "z" }],
+      "x4": [{ "type": "projected", "range": [0, 1] }, { "type": "colour" }] } })";
+  EXPECT_TRUE(has_error(plan_of(json, 4), "coordinates.x4", "takes no other channel"));
+  const std::string fixed = replaced(json, R"({ "type": "colour" })", R"({ "type": "fixed", "value": 0 })");
+  EXPECT_TRUE(has_error(plan_of(fixed, 4), "coordinates.x4", "takes no other channel"));
+  const LoadResult bad = load_mapping(replaced(json, R"("range": [0, 1] })", R"("tolerance": 0 })"));
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(format_errors(bad.errors), "coordinates.x4[0].tolerance: must be > 0\n");
+  const LoadResult curve = load_mapping(replaced(json, R"("range": [0, 1] })", R"("curve": "linear" })"));
+  EXPECT_FALSE(curve.ok()); // nothing is mapped, so no curve (nor target)
+}
+
 // --- bad mappings: each error names its place --------------------------------------------
 
 TEST(MappingPlanErrors, MissingCoordinate)

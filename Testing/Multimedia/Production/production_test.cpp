@@ -210,6 +210,42 @@ TEST(Production, AMappingThatDoesNotFitWritesNothing)
   EXPECT_FALSE(fs::exists(out));
 }
 
+// x5 projected over [0, 1]: the cells are cut from the projection (the ball at x5 = 1, the
+// largest), and the manifest says which coordinates were projected over what.
+TEST(Production, ProjectedCoordinatesAreCutFromTheProjectionAndListed)
+{
+  const fs::path out = fresh("projected");
+  ProductionInputs in = inputs(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2, 2] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2, 2] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-2, 2] }],
+    "x4": [{ "type": "spreadsheet", "axis": "columns", "values": [0, 0.5] }],
+    "x5": [{ "type": "projected", "range": [0, 1], "tolerance": 0.001 }] },
+  "world": { "resolution": 16 },
+  "spreadsheet": { "cell_size": 48 } })");
+  ProductionOptions run;
+  run.directory = out;
+  run.threads = 2;
+  const ProductionReport report = frep::mapping::produce(in, run);
+  ASSERT_TRUE(report.ok()) << why(report);
+  EXPECT_TRUE(fs::exists(out / "spreadsheet.png"));
+  const nlohmann::json manifest = nlohmann::json::parse(report.manifest);
+  ASSERT_TRUE(manifest.contains("projected")) << report.manifest;
+  EXPECT_EQ(manifest["projected"]["x5"]["range"], nlohmann::json({ 0.0, 1.0 }));
+  EXPECT_EQ(manifest["projected"]["x5"]["tolerance"], 0.001);
+  EXPECT_EQ(manifest["object"], "grow"); // the model's, not the projection's wrapper
+  EXPECT_TRUE(temporaries(out).empty());
+  // Not the section at x5's middle (what the samples' value says): larger balls, more triangles.
+  ProductionInputs middle = in;
+  middle.spec.coordinates[4].channels[0].type = frep::mapping::Channel::Type::Fixed;
+  middle.spec.coordinates[4].channels[0].value = 0.5;
+  run.directory = fresh("projected_middle");
+  const ProductionReport fixed = frep::mapping::produce(middle, run);
+  ASSERT_TRUE(fixed.ok()) << why(fixed);
+  EXPECT_GT(report.triangles, fixed.triangles + fixed.triangles / 4);
+}
+
 TEST(Production, FramesAreKeptOnlyForTheSameInputs)
 {
   const fs::path out = fresh("resume");

@@ -6,6 +6,7 @@
 #include "Mapping/mapping_json.h"
 #include "Mapping/mapping_plan.h"
 #include "Scene/section_mesh.h"
+#include "Scene/section_model.h"
 
 #include "Compiler/model.h"
 #include "Language/ast.h"
@@ -172,6 +173,39 @@ TEST(SectionMesh, WorldCoordinateColoursThePoints)
     EXPECT_NEAR(s.colours[3 * i], (z + 1) / 2, 1e-5);              // red = the unit value of x3
     EXPECT_NEAR(s.colours[3 * i + 1], plan.still.colour[1], 1e-6); // the others unchanged
   }
+}
+
+// A sphere of radius 0.5 moving from x = -1 to 1 as x4 goes 0 -> 1, x4 projected: the section
+// is the capsule it sweeps (volume pi r^2 2 + 4/3 pi r^3), not the ball at x4's middle.
+TEST(SectionMesh, ProjectedCoordinateGivesTheSweptVolume)
+{
+  const auto model = compile(
+    R"(my_model(x[4], a[1]) { my_model = 0.25 - ((x[1] + 1 - 2*x[4])^2 + x[2]^2 + x[3]^2); })");
+  ASSERT_TRUE(model);
+  const frep::mapping::Plan plan = plan_of(R"({
+    "coordinates": {
+      "x1": [{ "type": "world", "axis": "x", "range": [-1.6, 1.6] }],
+      "x2": [{ "type": "world", "axis": "y", "range": [-0.6, 0.6] }],
+      "x3": [{ "type": "world", "axis": "z", "range": [-0.6, 0.6] }],
+      "x4": [{ "type": "projected", "range": [0, 1] }] },
+    "world": { "resolution": 64 } })",
+    4);
+  const frep::mapping::SectionModel projected = frep::mapping::section_model(model, plan, {});
+  ASSERT_TRUE(projected.ok()) << projected.error;
+  EXPECT_EQ(projected.model->x_dim(), 4); // the coordinates keep their numbers
+  const frep::mapping::Section s =
+    frep::mapping::make_section(*projected.model, {}, plan, plan.still);
+  ASSERT_TRUE(s.ok()) << s.error;
+  const double capsule = pi * 0.25 * 2 + 4.0 / 3.0 * pi * 0.125;
+  EXPECT_NEAR(topology(s).signed_volume, capsule, 0.02 * capsule);
+  EXPECT_EQ(topology(s).components, 1u);
+  // Without the projection the same sample is the ball at x4 = 0.5.
+  const frep::mapping::Section ball = frep::mapping::make_section(*model, {}, plan, plan.still);
+  EXPECT_NEAR(topology(ball).signed_volume, 4.0 / 3.0 * pi * 0.125, 0.03 * 0.5236);
+  // Nothing projected: the model itself.
+  frep::mapping::Plan plain = plan;
+  plain.projected.clear();
+  EXPECT_EQ(frep::mapping::section_model(model, plain, {}).model, model);
 }
 
 TEST(SectionMesh, BadSampleIsAnError)

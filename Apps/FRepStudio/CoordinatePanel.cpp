@@ -1,5 +1,8 @@
 #include "CoordinatePanel.h"
 
+#include "Language/names.h"
+
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -11,6 +14,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 
@@ -21,11 +25,11 @@ namespace
 {
 constexpr int kSliderSteps = 1000;
 
-std::string lower_case(std::string text)
+// "x4" / "a1": a letter and a number.
+bool is_value_name(const std::string& name, char letter)
 {
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
+  return name.size() >= 2 && name[0] == letter &&
+         std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 }
 
@@ -111,49 +115,7 @@ void CoordinatePanel::setModelShape(int x_dim, int a_dim, const CoordinateRanges
     coordinate.hi = range[1];
     const double value = std::clamp(remembered(coordinate.name, range[0]), range[0], range[1]);
 
-    auto* row = new QWidget(coordinate_box_);
-    auto* row_layout = new QHBoxLayout(row);
-    row_layout->setContentsMargins(0, 0, 0, 0);
-    coordinate.slider = new QSlider(Qt::Horizontal, row);
-    coordinate.slider->setObjectName(QString::fromStdString(coordinate.name) + "Slider");
-    coordinate.slider->setRange(0, kSliderSteps);
-    coordinate.spin = new QDoubleSpinBox(row);
-    coordinate.spin->setObjectName(QString::fromStdString(coordinate.name) + "Spin");
-    coordinate.spin->setDecimals(3);
-    coordinate.spin->setRange(range[0], range[1]);
-    coordinate.spin->setSingleStep((range[1] - range[0]) / 100);
-    coordinate.spin->setValue(value);
-    coordinate.slider->setValue(
-      static_cast<int>(std::lround((value - range[0]) / (range[1] - range[0]) * kSliderSteps)));
-    row_layout->addWidget(coordinate.slider, 1);
-    row_layout->addWidget(coordinate.spin);
-    coordinate_form_->addRow(QString::fromStdString(coordinate.name), row);
-
-    const std::size_t k = sliders_.size();
-    // The slider and the spin box show one value: each updates the other without echo.
-    connect(coordinate.slider, &QSlider::valueChanged, this, [this, k](int step) {
-      Coordinate& c = sliders_[k];
-      const double v = c.lo + (c.hi - c.lo) * step / kSliderSteps;
-      {
-        QSignalBlocker block(c.spin);
-        c.spin->setValue(v);
-      }
-      values_[c.name] = v;
-      emit valuesChanged();
-    });
-    connect(coordinate.spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
-      [this, k](double v) {
-        Coordinate& c = sliders_[k];
-        {
-          QSignalBlocker block(c.slider);
-          c.slider->setValue(
-            static_cast<int>(std::lround((v - c.lo) / (c.hi - c.lo) * kSliderSteps)));
-        }
-        values_[c.name] = v;
-        emit valuesChanged();
-      });
-    values_[coordinate.name] = value;
-    sliders_.push_back(coordinate);
+    addCoordinateRow(coordinate, value);
   }
   coordinate_box_->setVisible(!sliders_.empty());
 
@@ -175,12 +137,89 @@ void CoordinatePanel::setModelShape(int x_dim, int a_dim, const CoordinateRanges
   parameter_box_->setVisible(!parameters_.empty());
 }
 
+// One coordinate's row: its slider and spin box, which show one value (each updates the other
+// without echo), and its projected box, which disables both while ticked.
+void CoordinatePanel::addCoordinateRow(Coordinate coordinate, double value)
+{
+  const std::array<double, 2> range{ coordinate.lo, coordinate.hi };
+  auto* row = new QWidget(coordinate_box_);
+  auto* row_layout = new QHBoxLayout(row);
+  row_layout->setContentsMargins(0, 0, 0, 0);
+  coordinate.slider = new QSlider(Qt::Horizontal, row);
+  coordinate.slider->setObjectName(QString::fromStdString(coordinate.name) + "Slider");
+  coordinate.slider->setRange(0, kSliderSteps);
+  coordinate.spin = new QDoubleSpinBox(row);
+  coordinate.spin->setObjectName(QString::fromStdString(coordinate.name) + "Spin");
+  coordinate.spin->setDecimals(3);
+  coordinate.spin->setRange(range[0], range[1]);
+  coordinate.spin->setSingleStep((range[1] - range[0]) / 100);
+  coordinate.spin->setValue(value);
+  coordinate.slider->setValue(
+    static_cast<int>(std::lround((value - range[0]) / (range[1] - range[0]) * kSliderSteps)));
+  coordinate.projected = new QCheckBox(tr("projected"), row);
+  coordinate.projected->setObjectName(QString::fromStdString(coordinate.name) + "Projected");
+  coordinate.projected->setToolTip(tr("Show the union over the slider's whole range (the model "
+                                      "projected along this coordinate) instead of one value"));
+  const bool projected = projected_.count(coordinate.name) != 0;
+  coordinate.projected->setChecked(projected);
+  coordinate.slider->setEnabled(!projected);
+  coordinate.spin->setEnabled(!projected);
+  row_layout->addWidget(coordinate.slider, 1);
+  row_layout->addWidget(coordinate.spin);
+  row_layout->addWidget(coordinate.projected);
+  coordinate_form_->addRow(QString::fromStdString(coordinate.name), row);
+
+  const std::size_t k = sliders_.size();
+  connect(coordinate.slider, &QSlider::valueChanged, this, [this, k](int step) {
+    Coordinate& c = sliders_[k];
+    const double v = c.lo + (c.hi - c.lo) * step / kSliderSteps;
+    {
+      QSignalBlocker block(c.spin);
+      c.spin->setValue(v);
+    }
+    values_[c.name] = v;
+    emit valuesChanged();
+  });
+  connect(coordinate.spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+    [this, k](double v) {
+      Coordinate& c = sliders_[k];
+      {
+        QSignalBlocker block(c.slider);
+        c.slider->setValue(
+          static_cast<int>(std::lround((v - c.lo) / (c.hi - c.lo) * kSliderSteps)));
+      }
+      values_[c.name] = v;
+      emit valuesChanged();
+    });
+  connect(coordinate.projected, &QCheckBox::toggled, this, [this, k](bool on) {
+    Coordinate& c = sliders_[k];
+    c.slider->setEnabled(!on);
+    c.spin->setEnabled(!on);
+    if (on)
+      projected_.insert(c.name);
+    else
+      projected_.erase(c.name);
+    emit valuesChanged();
+  });
+  values_[coordinate.name] = value;
+  sliders_.push_back(coordinate);
+}
+
 std::vector<double> CoordinatePanel::fixedValues() const
 {
   std::vector<double> values;
   for (const Coordinate& c : sliders_)
     values.push_back(c.spin->value());
   return values;
+}
+
+std::vector<frep::project::CoordinateRange> CoordinatePanel::projectedRanges() const
+{
+  std::vector<frep::project::CoordinateRange> ranges;
+  for (std::size_t k = 0; k < sliders_.size(); ++k)
+    if (sliders_[k].projected->isChecked())
+      ranges.push_back({ static_cast<int>(k) + 4, sliders_[k].lo, sliders_[k].hi });
+  return ranges;
 }
 
 std::vector<double> CoordinatePanel::parameters() const
@@ -193,9 +232,8 @@ std::vector<double> CoordinatePanel::parameters() const
 
 bool CoordinatePanel::setValue(const std::string& raw_name, double value)
 {
-  const std::string name = lower_case(raw_name);
-  if (name.size() < 2 || (name[0] != 'x' && name[0] != 'a') ||
-    !std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c); }))
+  const std::string name = frep::lower_case(raw_name);
+  if (!is_value_name(name, 'x') && !is_value_name(name, 'a'))
     return false;
   values_[name] = value;
   const int index = std::stoi(name.substr(1)) - 1;
@@ -203,6 +241,21 @@ bool CoordinatePanel::setValue(const std::string& raw_name, double value)
     sliders_[index - 3].spin->setValue(value); // emits valuesChanged through the spin box
   else if (name[0] == 'a' && index >= 0 && index < static_cast<int>(parameters_.size()))
     parameters_[index]->setValue(value);
+  return true;
+}
+
+bool CoordinatePanel::setProjected(const std::string& raw_name, bool projected)
+{
+  const std::string name = frep::lower_case(raw_name);
+  if (!is_value_name(name, 'x'))
+    return false;
+  const int index = std::stoi(name.substr(1)) - 1;
+  if (index >= 3 && index - 3 < static_cast<int>(sliders_.size()))
+    sliders_[index - 3].projected->setChecked(projected); // emits valuesChanged when it changes
+  else if (projected)
+    projected_.insert(name);
+  else
+    projected_.erase(name);
   return true;
 }
 

@@ -1,16 +1,22 @@
 // The model panel: the object picker, a slider + spin box per coordinate beyond x1..x3 (the
-// cross-section's fixed values) and a field per parameter a[i]. Values are remembered by name,
-// so editing the model (which rebuilds the panel) keeps where the user was.
+// cross-section's fixed values), each with a "projected" box (the section is then the union over
+// the slider's range: the model projected along that coordinate) and a field per parameter a[i].
+// Values and projected boxes are remembered by name, so editing the model (which rebuilds the
+// panel) keeps where the user was.
 #pragma once
 
 #include "CoordinateRanges.h"
 
+#include "Project/projection.h"
+
 #include <QWidget>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -38,12 +44,18 @@ public:
 
   /// x4..x[x_dim] as set now.
   std::vector<double> fixedValues() const;
+  /// The coordinates whose "projected" box is ticked, over their sliders' ranges (1-based, in
+  /// increasing order; empty: none). Their fixedValues() are read by nothing.
+  std::vector<frep::project::CoordinateRange> projectedRanges() const;
   /// a[1..a_dim] as set now.
   std::vector<double> parameters() const;
 
   /// Sets coordinate `name` ("x4") or parameter ("a1"). A name the model does not have (yet) is
   /// remembered and applied when it appears. Returns false for a malformed name.
   bool setValue(const std::string& name, double value);
+  /// Ticks or clears coordinate `name`'s ("x4") projected box; remembered for a coordinate the
+  /// model does not have (yet). Returns false for a malformed name.
+  bool setProjected(const std::string& name, bool projected);
   /// The slider of coordinate x[index + 1] (index >= 3), or null (for tests).
   QSlider* slider(int index) const;
   int sliderCount() const { return static_cast<int>(sliders_.size()); }
@@ -60,7 +72,9 @@ private:
     double lo = 0, hi = 1;
     QSlider* slider = nullptr;
     QDoubleSpinBox* spin = nullptr;
+    QCheckBox* projected = nullptr;
   };
+  void addCoordinateRow(Coordinate coordinate, double value);
   void clearForm(QFormLayout* form);
   double remembered(const std::string& name, double fallback) const;
 
@@ -72,6 +86,7 @@ private:
   std::vector<Coordinate> sliders_;
   std::vector<QDoubleSpinBox*> parameters_;
   std::map<std::string, double> values_; ///< every value set, by name ("x4", "a1")
+  std::set<std::string> projected_;      ///< the coordinates projected, by name
 };
 
 } // namespace frepstudio

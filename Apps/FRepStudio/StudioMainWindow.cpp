@@ -486,6 +486,19 @@ void StudioMainWindow::requestSection(std::vector<int> resolutions)
   request.s_dim = object->s_dim;
   request.parameters = panel_->parameters();
   request.fixed_values = panel_->fixedValues();
+  if (const auto projected = panel_->projectedRanges(); !projected.empty())
+  {
+    // The union over the ticked coordinates' ranges; the source's a[] are baked into it.
+    std::string why;
+    request.model = projected_.get(object->model, projected, request.parameters, why);
+    if (!request.model)
+    {
+      status_->setText(tr("Cannot project: %1").arg(QString::fromStdString(why)));
+      return;
+    }
+    request.s_dim = 1;
+    request.parameters.clear();
+  }
   for (int i = 0; i < 3; ++i)
   {
     const auto range = object->ranges.range(i);

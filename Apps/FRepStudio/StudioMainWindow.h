@@ -11,6 +11,7 @@
 #include "MeshWorker.h"
 #include "ModelAnalysis.h"
 #include "PictureWorker.h"
+#include "ProjectedModel.h"
 #include "UserInputs.h"
 
 #include <QElapsedTimer>
@@ -156,6 +157,7 @@ private:
   QAction* high_quality_ = nullptr;
   QTimer picture_timer_;
   std::optional<SectionRequest> last_request_; ///< the newest section request (its values)
+  ProjectedModel projected_; ///< the current object projected along the ticked coordinates
 
   QString file_;
   QTimer parse_timer_;

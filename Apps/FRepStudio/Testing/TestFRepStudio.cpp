@@ -25,6 +25,7 @@
 #include "Mesh/surface.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QFileInfo>
 #include <QComboBox>
@@ -41,6 +42,7 @@
 #include <QToolButton>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include <vtkCellArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
@@ -230,6 +232,7 @@ private slots:
   void exportAnimationWritesMovie();
   void exportAnimationCancels();
   void shapeFilesAreCallable();
+  void projectedCoordinateShowsTheSweep();
 };
 
 void TestFRepStudio::coordinateRangesFromFile()
@@ -1094,6 +1097,55 @@ int main(int argc, char* argv[])
   QApplication::setApplicationName("FRepStudioTests");
   TestFRepStudio test;
   return QTest::qExec(&test, argc, argv);
+}
+
+/// The volume a closed, outward triangle mesh encloses (divergence theorem).
+double enclosedVolume(vtkPolyData* poly)
+{
+  double volume = 0;
+  const vtkIdType* ids = nullptr;
+  vtkIdType n = 0;
+  vtkCellArray* polys = poly->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n != 3)
+      continue;
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      poly->GetPoint(ids[k], p[k]);
+    volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6.0;
+  }
+  return volume;
+}
+
+void TestFRepStudio::projectedCoordinateShowsTheSweep()
+{
+  // A sphere of radius 0.5 moving from x = -1 to 1 as x4 goes 0 -> 1: at the slider's value a
+  // ball, with x4 projected the capsule it sweeps (pi r^2 2 + 4/3 pi r^3).
+  auto window = shownWindow();
+  QVERIFY(window);
+  window->setModelText("moving(x[4], a[1])\n{\n  moving = 0.25 - ((x[1] + 1 - 2*x[4])^2 + "
+                       "x[2]^2 + x[3]^2);\n}\n");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  const double ball = 4.0 / 3.0 * M_PI * 0.125, capsule = M_PI * 0.25 * 2 + ball;
+  QVERIFY(std::abs(enclosedVolume(window->sectionView()->section()) - ball) < 0.03 * ball);
+  auto* projected = window->findChild<QCheckBox*>("x4Projected");
+  QVERIFY(projected);
+  projected->setChecked(true);
+  QVERIFY(!window->findChild<QSlider*>("x4Slider")->isEnabled());
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  const double swept = enclosedVolume(window->sectionView()->section());
+  QVERIFY2(std::abs(swept - capsule) < 0.02 * capsule, qPrintable(QString::number(swept)));
+  // Remembered when the model is edited (the panel is rebuilt), cleared by unticking.
+  window->setModelText("moving(x[4], a[1])\n{\n  moving = 0.25 - ((x[1] + 1 - 2*x[4])^2 + "
+                       "x[2]^2 + x[3]^2);\n  -- edited\n}\n");
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(window->findChild<QCheckBox*>("x4Projected")->isChecked());
+  QVERIFY(window->coordinatePanel()->setProjected("X4", false));
+  QVERIFY(wait_until_settled(*window, kSettleMs));
+  QVERIFY(std::abs(enclosedVolume(window->sectionView()->section()) - ball) < 0.03 * ball);
 }
 
 #include "TestFRepStudio.moc"

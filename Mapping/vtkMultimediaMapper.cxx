@@ -411,14 +411,13 @@ int vtkMultimediaMapper::RequestData(vtkInformation*,
   }
 
   // The model itself, or its projection when the mapping projects coordinates.
-  const frep::mapping::SectionModel sectioned =
-    frep::mapping::section_model(object->GetModel(), in.Plan, in.Parameters);
+  const auto sectioned = frep::mapping::section_model(object->GetModel(), in.Plan, in.Parameters);
   if (!sectioned.ok())
   {
     vtkErrorMacro(<< sectioned.error << "; the output is empty");
     return 1;
   }
-  const std::shared_ptr<const frep::Model> model = sectioned.model;
+  const std::shared_ptr<const frep::Model>& model = sectioned.model;
   // Distributed runs: piece p of n meshes the samples i with i % n == p (the others stay empty
   // partitioned data sets, so every rank has the same structure and names); the pieces
   // together hold every sample once.

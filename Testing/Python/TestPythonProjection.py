@@ -7,7 +7,9 @@
   at 1000 random points (frepkit.evaluate) keep the projector's contract against the capsule's
   closed form (never above it; within the tolerance of it inside the band; beyond it the sign);
 - polygonised: the capsule's volume (vtkMassProperties) within 2 %;
-- a coordinate the model lacks: frepkit.update raises FRepError with the filter's message.
+- a coordinate the model lacks: frepkit.update raises FRepError with the filter's message;
+- vtkFRepSpaceTimeQuery: the moving sphere's section volume at 3 times (the ball's, 2 %), when
+  the point (0, 0, 0) is inside (x4 in [0.25, 0.75]), as numpy arrays of its table's columns.
 Exits 1 on any failed check."""
 
 import math
@@ -20,7 +22,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from python_checks import check, finish  # noqa: E402
 
 import frepkit  # noqa: E402
-from frepkit import vtkFRepPolygonizer, vtkFRepProjection, vtkHyperFunSource  # noqa: E402
+from frepkit import vtkFRepPolygonizer, vtkFRepProjection, vtkFRepSpaceTimeQuery, vtkHyperFunSource  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkMassProperties, vtkTriangleFilter  # noqa: E402
 
 source = vtkHyperFunSource()
@@ -66,4 +69,24 @@ try:
     check(False, "a coordinate the model lacks raises FRepError")
 except frepkit.FRepError as e:
     check("cannot project along coordinate 6" in str(e), "FRepError says why: %s" % e)
+
+# The questions of space-time, in the object's box (the sphere's whole way).
+source.SetCoordinateRange(0, -1.6, 1.6)
+source.SetCoordinateRange(1, -0.7, 0.7)
+source.SetCoordinateRange(2, -0.7, 0.7)
+query = vtkFRepSpaceTimeQuery()
+query.SetInputConnection(source.GetOutputPort())
+query.SetSteps(3)
+frepkit.update(query)
+volumes = vtk_to_numpy(query.GetOutput().GetColumnByName("volume"))
+ball = 4.0 / 3.0 * math.pi * 0.125
+check(len(volumes) == 3 and numpy.all(numpy.abs(volumes - ball) < 0.02 * ball),
+      "the section is the ball at every time: %s" % volumes)
+query.SetQueryToPresence()
+query.SetPoint(0.0, 0.0, 0.0)
+frepkit.update(query)
+enter = vtk_to_numpy(query.GetOutput().GetColumnByName("enter"))
+leave = vtk_to_numpy(query.GetOutput().GetColumnByName("leave"))
+check(len(enter) == 1 and abs(enter[0] - 0.25) < 2e-4 and abs(leave[0] - 0.75) < 2e-4,
+      "the origin is inside for x4 in [0.25, 0.75]: %s %s" % (enter, leave))
 finish()

@@ -330,6 +330,30 @@ projection.ProjectedRange = [0.0, 0.5]
 sweep.UpdatePipeline()
 t.near(bounds(sweep)[1], 0.5, 0.1, "half the way: max x 0.5")
 
+# --- FRep Space-Time Query: the sweeping sphere's volume over time, and first contact -----------
+# The box the questions are asked in is the object's intervals: the whole way of both spheres
+# (the source's own bounds are those of one position).
+spacetime = HyperFunSource(ModelText=moving.ModelText)
+spacetime.CoordinateRanges = [-1.6, 1.6, -0.7, 0.7, -0.7, 0.7, 0.0, 1.0]
+query = FRepSpaceTimeQuery(Input=spacetime)
+t.check(query.Query == "Volume" and query.TimeCoordinate == 3 and query.Steps == 11,
+        "Space-Time Query defaults: Volume, x4, 11 steps")
+query.Steps = 2
+query.Samples = 32
+query.UpdatePipeline()
+table = query.GetClientSideObject().GetOutputDataObject(0)  # builtin session
+t.check(table.GetNumberOfRows() == 2, "two times: %d" % table.GetNumberOfRows())
+ball = 4.0 / 3.0 * 3.141592653589793 * 0.125
+t.near(table.GetColumnByName("volume").GetValue(1), ball, 0.03 * ball, "the ball's volume at t = 1")
+other = HyperFunSource(ModelText="ot(x[4], a[1]) { ot = 0.25 - ((x[1] - 1 + 2*x[4])^2 + x[2]^2 + x[3]^2); }")
+query.SecondObject = other
+query.Query = "Contact"
+query.UpdatePipeline()
+table = query.GetClientSideObject().GetOutputDataObject(0)
+# Both move towards x = 0 at speed 2 from -1 and 1, radius 0.5: they touch at t = 0.25.
+t.check(table.GetColumnByName("found").GetValue(0) == 1, "they touch")
+t.near(table.GetColumnByName("time").GetValue(0), 0.25, 1e-3, "first contact at t = 0.25")
+
 # --- Multimedia Mapper: spreadsheet, frames and time ------------------------------------------
 mreader = HyperFunReader(FileName=morph4d, GenerateGeometry=0)
 mapper = MultimediaMapper(Input=mreader,

@@ -1099,4 +1099,11 @@ IntervalResult IntervalEvaluator::run(std::span<const Interval> box, Choice* cho
   return result;
 }
 
+bool IntervalEvaluator::output(std::size_t i, Interval& value) const
+{
+  const std::uint32_t s = tape_->outputs.at(i);
+  value = slots_[s];
+  return may_nan_[s] == 0 && !std::isnan(value.lo) && !std::isnan(value.hi);
+}
+
 } // namespace frep

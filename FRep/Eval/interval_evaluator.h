@@ -74,6 +74,10 @@ public:
 
   const Tape& tape() const { return *tape_; }
 
+  /// After an evaluate: the enclosure of output `i` (0 is F, as evaluate returns) over its box in
+  /// `value`; false when it may be NaN there (then `value` holds only the non-NaN values).
+  bool output(std::size_t i, Interval& value) const;
+
   /// Evaluates `tape` from now on, keeping the buffers (for walks that evaluate many boxes, each
   /// with its own simplified tape). A `trusted` tape (one TapeSimplifier made) is not checked
   /// again. Rebinding the same tape costs nothing.

@@ -1,11 +1,15 @@
 #include "Project/projector.h"
 
 #include "Eval/gradient_evaluator.h"
+#include "Eval/interval_evaluator.h"
+#include "Eval/point_evaluator.h"
 #include "Project/detail/box_split.h"
+#include "Project/detail/tape_split.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace frep::project
@@ -25,10 +29,18 @@ using detail::centre;
 
 } // namespace
 
-// Per thread: the walker, a gradient evaluator and the scratch of one search.
+// Per thread: the walkers, the evaluators and the scratch of one search.
 struct Projector::Search
 {
-  RegionWalker walker;
+  // A point's search walks the suffix (the part of F that reads t), after the prefix (the part
+  // that reads x' alone) has been evaluated once at the point; an enclosure over a box of x'
+  // walks the whole tape.
+  std::optional<PointEvaluator> prefix;
+  std::optional<IntervalEvaluator> prefix_intervals;
+  std::vector<double> prefix_values;
+  RegionWalker point_walker;
+  RegionWalker box_walker;
+  RegionWalker* walker = nullptr; // the one the current walk uses
   GradientEvaluator gradients;
   std::vector<Interval> box;                 // kept inputs, then the eliminated ones
   std::vector<std::vector<double>> columns;  // two points' inputs, one column per input
@@ -51,16 +63,25 @@ struct Projector::Search
   bool may_fail = false;
 
   void seed(const RegionWalker::Region& root);
+  bool enclose_prefix(std::span<const Interval> kept);
   void evaluate_centres(const RegionWalker::Region& region, int axis, const Interval (&halves)[2],
     double (&values)[2]);
   void visit_maximum(const RegionWalker::Region& region);
   void visit_enclosure(const RegionWalker::Region& region);
 
-  explicit Search(const std::shared_ptr<const Tape>& tape)
-    : walker(tape)
+  Search(const std::shared_ptr<const Tape>& tape, const detail::SplitTape& split)
+    : point_walker(split.suffix)
+    , box_walker(tape)
     , gradients(tape)
   {
-    columns.assign(tape->input_count, std::vector<double>(kMaxSeeds));
+    if (split.prefix)
+    {
+      prefix.emplace(split.prefix);
+      prefix_intervals.emplace(split.prefix);
+      prefix_values.resize(split.prefix->outputs.size());
+    }
+    columns.assign(std::max(tape->input_count, split.suffix->input_count),
+      std::vector<double>(kMaxSeeds));
     for (const std::vector<double>& column : columns)
       pointers.push_back(column.data());
   }
@@ -80,9 +101,8 @@ Projector::Projector(std::shared_ptr<const Tape> tape, std::vector<Interval> ran
   if (!(options_.tolerance > 0.0) || options_.max_boxes < 1 || options_.enclosure_boxes < 1)
     throw std::invalid_argument("Projector: tolerance <= 0 or no boxes");
   kept_ = tape_->input_count - ranges_.size();
-  search_ = std::make_unique<Search>(tape_);
+  search_ = std::make_unique<Search>(tape_, detail::split_tape(*tape_, kept_));
   search_->ranges = ranges_;
-  search_->kept = kept_;
   search_->options = &options_;
 }
 
@@ -138,7 +158,7 @@ void Projector::Search::seed(const RegionWalker::Region& root)
   }
   double values[kMaxSeeds];
   std::uint32_t errors[kMaxSeeds] = {};
-  walker.evaluate(root, pointers, count, values, errors);
+  walker->evaluate(root, pointers, count, values, errors);
   for (std::size_t p = 0; p < count; ++p)
     if (errors[p] == 0 && values[p] > best) // NaN is never better
     {
@@ -163,7 +183,7 @@ void Projector::Search::evaluate_centres(const RegionWalker::Region& region, int
   for (std::size_t c = 0; c < 2; ++c)
     columns[a][c] = centre(halves[c]);
   std::uint32_t errors[2] = { 0, 0 };
-  walker.evaluate(region, pointers, 2, values, errors);
+  walker->evaluate(region, pointers, 2, values, errors);
   for (std::size_t c = 0; c < 2; ++c)
   {
     if (errors[c] != 0 || std::isnan(values[c]))
@@ -186,7 +206,7 @@ void Projector::Search::visit_maximum(const RegionWalker::Region& region)
   }
   if (best >= stop_at)
     return; // the question asked is answered
-  const IntervalResult r = walker.enclose(region, box);
+  const IntervalResult r = walker->enclose(region, box);
   ++boxes;
   if (!(r.value.hi > best + options->tolerance) || r.value.hi < prune_below)
     return;
@@ -196,7 +216,7 @@ void Projector::Search::visit_maximum(const RegionWalker::Region& region)
     resolved = false; // as small as boxes get, and still not within the tolerance
     return;
   }
-  const RegionWalker::Region inner = walker.descend(region);
+  const RegionWalker::Region inner = walker->descend(region);
   Interval& b = box[kept + static_cast<std::size_t>(axis)];
   const Interval whole = b;
   const double middle = centre(whole);
@@ -231,23 +251,33 @@ Maximum Projector::run_search(std::span<const double> kept)
   if (kept.size() != kept_)
     throw std::invalid_argument("Projector::maximise: wrong number of kept inputs");
   Search& s = *search_;
-  s.box.clear();
-  for (const double x : kept)
-    s.box.push_back(Interval::point(x));
-  s.box.insert(s.box.end(), ranges_.begin(), ranges_.end());
   s.best = -std::numeric_limits<double>::infinity();
   s.best_at.assign(ranges_.size(), 0.0);
   for (std::size_t e = 0; e < ranges_.size(); ++e)
     s.best_at[e] = centre(ranges_[e]);
   s.boxes = 0;
   s.resolved = true;
+  // The part of F that reads x' alone, once: a point where it fails fails for every t.
+  std::span<const double> inputs; // the suffix's inputs before t: none without a prefix
+  if (s.prefix)
+  {
+    if (s.prefix->evaluate(kept, s.prefix_values) != 0)
+      return Maximum{ std::numeric_limits<double>::quiet_NaN(), s.best_at, true, 0 };
+    inputs = s.prefix_values;
+  }
+  s.box.clear();
+  for (const double x : inputs)
+    s.box.push_back(Interval::point(x));
+  s.box.insert(s.box.end(), ranges_.begin(), ranges_.end());
+  s.kept = inputs.size();
+  s.walker = &s.point_walker;
 
   // A lattice of T first (its centre and corners, 9 points of a single range): a lower bound
   // before any box is enclosed, in one evaluation.
   // Each point's search tries simplifying afresh (the blade of sweep_benchmark.cpp meshes in
   // 2.5 s instead of 3.9 s at 64^3): its deep boxes simplify where its first ones did not.
-  s.walker.restart();
-  const RegionWalker::Region root = s.walker.root();
+  s.walker->restart();
+  const RegionWalker::Region root = s.walker->root();
   s.seed(root);
 
   s.visit_maximum(root);
@@ -260,12 +290,34 @@ Maximum Projector::run_search(std::span<const double> kept)
   return m;
 }
 
+// The prefix's enclosures over a box of x' as the suffix's first inputs (the suffix is then walked
+// over the boxes of T, the prefix evaluated once: the composition of the two tapes' interval
+// rules is the whole tape's); false where a prefix value may be NaN.
+bool Projector::Search::enclose_prefix(std::span<const Interval> kept_box)
+{
+  box.clear();
+  if (prefix_intervals)
+  {
+    may_fail = prefix_intervals->evaluate(kept_box).may_fail;
+    for (std::size_t i = 0; i < prefix_values.size(); ++i)
+    {
+      Interval v;
+      if (!prefix_intervals->output(i, v))
+        return false;
+      box.push_back(v);
+    }
+  }
+  kept = box.size();
+  walker = &point_walker;
+  return true;
+}
+
 // The enclosure of P over a box of x': the boxes of T split while the budget lasts; P is at
 // least every box's lower end (each t of it is a candidate), at most the largest upper end of the
 // boxes that cover T (a box whose upper end is below the lower bound found adds nothing).
 void Projector::Search::visit_enclosure(const RegionWalker::Region& region)
 {
-  const IntervalResult r = walker.enclose(region, box);
+  const IntervalResult r = walker->enclose(region, box);
   ++boxes;
   may_fail = may_fail || r.may_fail;
   lo = std::max(lo, r.value.lo);
@@ -277,7 +329,7 @@ void Projector::Search::visit_enclosure(const RegionWalker::Region& region)
     hi = std::max(hi, r.value.hi);
     return;
   }
-  const RegionWalker::Region inner = walker.descend(region);
+  const RegionWalker::Region inner = walker->descend(region);
   Interval& b = box[kept + static_cast<std::size_t>(axis)];
   const Interval whole = b;
   const double middle = centre(whole);
@@ -294,13 +346,19 @@ IntervalResult Projector::enclose(std::span<const Interval> kept)
   if (kept.size() != kept_)
     throw std::invalid_argument("Projector::enclose: wrong number of kept inputs");
   Search& s = *search_;
-  s.box.assign(kept.begin(), kept.end());
-  s.box.insert(s.box.end(), ranges_.begin(), ranges_.end());
   s.boxes = 0;
   s.lo = s.hi = -std::numeric_limits<double>::infinity();
   s.may_fail = false;
-  s.walker.restart();
-  s.visit_enclosure(s.walker.root());
+  if (!s.enclose_prefix(kept))
+  {
+    // The whole tape over the box (the prefix may be NaN in it: the suffix cannot say).
+    s.box.assign(kept.begin(), kept.end());
+    s.kept = kept_;
+    s.walker = &s.box_walker;
+  }
+  s.box.insert(s.box.end(), ranges_.begin(), ranges_.end());
+  s.walker->restart();
+  s.visit_enclosure(s.walker->root());
   IntervalResult result;
   // P >= lo everywhere, so a point value (>= P - tolerance, or >= band) is at least the lower
   // of lo - tolerance and the band.

@@ -137,3 +137,60 @@ TEST(SweepText, BadPathsAreRefusedWithTheReason)
 }
 
 } // namespace
+
+// A ball in (x1, x2, x3) whose centre's x1, x2 are the model's x4, x5, driven along an L of
+// (x4, x5) points: at the path's points it is the ball there; projected along the family's x4 it
+// is the union of the balls along the L (the distance to the L, closed form), within the
+// tolerance; bad requests name the reason.
+TEST(PathFamilyText, AModelAlongAPathThroughItsCoordinatesProjectsToTheUnion)
+{
+  const char* source =
+    "moved(x[5], a[1]) { moved = 0.25 - ((x[1] - x[4])^2 + (x[2] - x[5])^2 + x[3]^2); }\n";
+  const std::vector<std::vector<double>> points = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+  const frep::project::SweepText family =
+    frep::project::write_path_family("family", "moved", 5, 1, { 4, 5 }, points, false);
+  ASSERT_TRUE(family.ok()) << frep::format_diagnostics(family.diagnostics);
+  frep::LoadOptions options;
+  options.object = "family";
+  const frep::LoadedModel loaded = frep::load_model(
+    frep::ModelSource::from_text(std::string(source) + family.text, "family.hf"), options);
+  ASSERT_TRUE(loaded.ok()) << loaded.message() << "\n" << family.text;
+  ASSERT_EQ(loaded.model->x_dim(), 4);
+  EXPECT_NEAR(value(*loaded.model, { 1, 0, 0, 0.5 }), 0.25, 1e-12);    // at the corner
+  EXPECT_NEAR(value(*loaded.model, { 1, 0.5, 0, 0.75 }), 0.25, 1e-12); // half way up
+  EXPECT_NEAR(value(*loaded.model, { 0.5, 0, 0.3, 0.25 }), 0.16, 1e-12);
+
+  frep::project::ProjectionOptions projection;
+  projection.band = INFINITY;
+  const frep::LoadedModel ghost =
+    frep::project::project(loaded.model, { { 4, 0, 1 } }, projection);
+  ASSERT_TRUE(ghost.ok()) << ghost.message();
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> u(-0.6, 1.6);
+  for (int i = 0; i < 200; ++i)
+  {
+    const double p[3] = { u(random), u(random), u(random) * 0.4 };
+    // Squared distance of (p1, p2) to the L: the bottom segment or the right one.
+    const double bottom = std::pow(std::clamp(p[0], 0.0, 1.0) - p[0], 2) + p[1] * p[1];
+    const double right = std::pow(p[0] - 1, 2) + std::pow(std::clamp(p[1], 0.0, 1.0) - p[1], 2);
+    const double exact = 0.25 - (std::min(bottom, right) + p[2] * p[2]);
+    const double v = value(*ghost.model, { p[0], p[1], p[2] });
+    EXPECT_LE(v, exact + 1e-9);
+    EXPECT_GE(v, exact - projection.tolerance - 1e-9);
+  }
+
+  const auto refused = [](const std::vector<int>& coordinates,
+                         const std::vector<std::vector<double>>& path, const char* why)
+  {
+    const frep::project::SweepText bad =
+      frep::project::write_path_family("family", "moved", 5, 1, coordinates, path, true);
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(frep::format_diagnostics(bad.diagnostics).find(why), std::string::npos)
+      << frep::format_diagnostics(bad.diagnostics);
+  };
+  refused({ 4, 4 }, points, "given twice");
+  refused({ 6 }, { { 0 }, { 1 } }, "x6 is not one of x1..x5");
+  refused({ 4, 5 }, { { 0, 0 } }, "at least 2 points");
+  refused({ 4, 5 }, { { 0, 0 }, { 1 } }, "point 2 has 1 values");
+  refused({ 1, 2, 3, 4, 5 }, { { 0, 0, 0, 0, 0 }, { 1, 1, 1, 1, 1 } }, "must leave one");
+}

@@ -9,6 +9,7 @@
 #include "Mapping/mapping_json.h"
 #include "Production/production.h"
 
+#include <algorithm>
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -54,6 +55,10 @@ mapping::Spec load_spec(const MapOptions& options)
   if (options.resolution)
   {
     spec.world.resolution = *options.resolution;
+    if (spec.animation.ghost) // a quick run is quick for the ghost too
+    {
+      spec.animation.ghost->resolution = std::min(spec.animation.ghost->resolution, *options.resolution);
+    }
   }
   if (options.frames)
   {
@@ -171,7 +176,8 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
   cmd
     ->add_option("--resolution",
       o.resolution,
-      "grid samples along the longest world axis (default: the mapping's world.resolution)")
+      "grid samples along the longest world axis (default: the mapping's world.resolution; the "
+      "ghost's animation.ghost.resolution is lowered to it)")
     ->check(CLI::Range(2, 4096));
   cmd->add_option("--frames", o.frames, "number of frames (default: duration x fps)")
     ->check(CLI::Range(1, 1000000));
@@ -183,7 +189,7 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
   cmd
     ->add_option("--only",
       o.only,
-      "produce only these: spreadsheet, path, frames, audio, movie, shape (default: all the "
+      "produce only these: spreadsheet, path, frames, audio, movie, shape, ghost (default: all the "
       "mapping defines)")
     ->delimiter(',')
     ->check(CLI::IsMember(mapping::product_names()));

@@ -34,7 +34,7 @@ struct MapOptions
   std::optional<int> frames;     ///< overrides the frame count (duration * fps)
   /// Overrides render.method for cells and frames alike: "mesh" (quick drafts) or "raycast".
   std::optional<std::string> method;
-  std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape
+  std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape, ghost
   std::string name;              ///< output stem; default: the mapping file's stem
   bool force = false;            ///< re-render frames that exist
   /// When set, the manifest's text is given here instead of written to manifest.json: frepkit

@@ -7,6 +7,7 @@
 #include "Compiler/detail/emit.h"
 #include "Compiler/detail/expr.h"
 #include "Compiler/detail/model_impl.h"
+#include "Compiler/detail/operand_tape.h"
 #include "Compiler/detail/tape_join.h"
 #include "Library/detail/library_generic.h"
 
@@ -17,19 +18,9 @@
 namespace frep
 {
 
-namespace
+namespace compiler
 {
 
-using compiler::Expr;
-using compiler::Lowered;
-using compiler::NodeId;
-
-bool is_pointwise(Operation operation)
-{
-  return operation != Operation::CartesianProduct;
-}
-
-/// The free coordinates of a valid specialisation in tape input order.
 std::vector<int> free_coordinates(int x_dim, const Specialisation& s)
 {
   if (!s.input_order.empty())
@@ -46,6 +37,57 @@ std::vector<int> free_coordinates(int x_dim, const Specialisation& s)
     }
   }
   return free;
+}
+
+std::vector<NodeId> append_operand(const Operand& operand,
+  const std::vector<int>& free,
+  int first,
+  const Specialisation& spec,
+  const std::vector<int>& input_of,
+  Lowered& lowered)
+{
+  Specialisation s = operand.specialisation;
+  s.fixed.resize(static_cast<std::size_t>(operand.model->x_dim()));
+  std::vector<std::pair<int, int>> order; // (result tape input, operand coordinate)
+  for (std::size_t i = 0; i < free.size(); ++i)
+  {
+    const auto r = static_cast<std::size_t>(first) + i;
+    const auto c = static_cast<std::size_t>(free[i]);
+    if (r < spec.fixed.size() && spec.fixed[r])
+    {
+      s.fixed[c] = spec.fixed[r];
+    }
+    else
+    {
+      order.emplace_back(input_of[r], free[i]);
+    }
+  }
+  std::sort(order.begin(), order.end());
+  s.input_order.clear();
+  std::vector<NodeId> inputs;
+  for (const auto& [input, coordinate] : order)
+  {
+    s.input_order.push_back(coordinate);
+    inputs.push_back(lowered.dag.input(input));
+  }
+  const std::shared_ptr<const Tape> tape = operand.model->specialise(s);
+  return compiler::append_tape(lowered, *tape, inputs);
+}
+
+} // namespace compiler
+
+namespace
+{
+
+using compiler::Expr;
+using compiler::Lowered;
+using compiler::NodeId;
+using compiler::append_operand;
+using compiler::free_coordinates;
+
+bool is_pointwise(Operation operation)
+{
+  return operation != Operation::CartesianProduct;
 }
 
 /// The Ctx of library::call_generic<Expr>: an abort of the library becomes a guard, as in the
@@ -141,8 +183,8 @@ public:
       lowered.input_count += index >= 0 ? 1 : 0;
     }
     // Right operand first, as the original evaluates `A | B`.
-    const std::vector<NodeId> out_b = append(sides_[1], spec, input_of, lowered);
-    const std::vector<NodeId> out_a = append(sides_[0], spec, input_of, lowered);
+    const std::vector<NodeId> out_b = append_operand(sides_[1].operand, sides_[1].free, sides_[1].first, spec, input_of, lowered);
+    const std::vector<NodeId> out_a = append_operand(sides_[0].operand, sides_[0].free, sides_[0].first, spec, input_of, lowered);
     compiler::Dag& dag = lowered.dag;
     const Expr fa(&dag, out_a[0]);
     const Expr fb(&dag, out_b[0]);
@@ -173,41 +215,6 @@ private:
     std::vector<int> free; ///< operand coordinate of each of its free coordinates
     int first = 0;         ///< result coordinate of its free coordinate 0
   };
-
-  /// Specialises one operand for the result's specialisation and appends its tape; returns the
-  /// nodes of its outputs.
-  static std::vector<NodeId> append(const Side& side,
-    const Specialisation& spec,
-    const std::vector<int>& input_of,
-    Lowered& lowered)
-  {
-    Specialisation s = side.operand.specialisation;
-    s.fixed.resize(static_cast<std::size_t>(side.operand.model->x_dim()));
-    std::vector<std::pair<int, int>> order; // (result tape input, operand coordinate)
-    for (std::size_t i = 0; i < side.free.size(); ++i)
-    {
-      const auto r = static_cast<std::size_t>(side.first) + i;
-      const auto c = static_cast<std::size_t>(side.free[i]);
-      if (r < spec.fixed.size() && spec.fixed[r])
-      {
-        s.fixed[c] = spec.fixed[r];
-      }
-      else
-      {
-        order.emplace_back(input_of[r], side.free[i]);
-      }
-    }
-    std::sort(order.begin(), order.end());
-    s.input_order.clear();
-    std::vector<NodeId> inputs;
-    for (const auto& [input, coordinate] : order)
-    {
-      s.input_order.push_back(coordinate);
-      inputs.push_back(lowered.dag.input(input));
-    }
-    const std::shared_ptr<const Tape> tape = side.operand.model->specialise(s);
-    return compiler::append_tape(lowered, *tape, inputs);
-  }
 
   Operation operation_;
   OperationParameters parameters_;

@@ -74,4 +74,24 @@ CombineResult combine(Operation operation,
   Operand b,
   const OperationParameters& parameters = {});
 
+/// One coordinate of the outer model of a composition: one of the composed model's own
+/// coordinates (`coordinate`, 0-based, when `function.model` is null), or a model of them
+/// (`function`: its free coordinates, by its specialisation, are the composed model's, all of
+/// them in order).
+struct CoordinateFunction
+{
+  int coordinate = -1;
+  Operand function;
+};
+
+/// The model G(y) = F(g_1(y), ..., g_n(y)) of `x_dim` coordinates y, named "compose(F)": F is
+/// `outer` (its free coordinates, by its specialisation, are fed by `coordinates` in order), each
+/// g_i is a coordinate of y or a model of y (a space map, a path through some of F's
+/// coordinates). One tape: the g_i's tapes and F's joined (fixing a coordinate of G fixes it
+/// in every g_i; values are F's on the g_i's values, bit for bit). s[] are F's; a[] none (the
+/// operands' are in their specialisations). Errors as values: a null model, a specialisation
+/// that does not fit, as many coordinates as F has free ones, a coordinate outside 0..x_dim-1,
+/// a g_i with another number of free coordinates than x_dim.
+CombineResult compose(Operand outer, std::vector<CoordinateFunction> coordinates, int x_dim);
+
 } // namespace frep

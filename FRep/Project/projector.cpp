@@ -27,6 +27,18 @@ constexpr double kMinRelativeWidth = 0x1p-30;
 
 using detail::centre;
 
+// A point's search walks the suffix without simplifying it per box: a search visits tens of
+// boxes of T, too few to pay for the shorter tapes. Measured on 2026-12-07 (frepkit mesh
+// --project x4=0:1 -j1, the benchmark's cases and two more): the turning blade at 64^3 8.25 s ->
+// 6.7 s, Meta5D along x4 at 48^3 1.11 -> 0.97 s, a union of 50 moving spheres at 64^3 76.6 ->
+// 71.1 s, the capsule at 96^3 1.09 -> 1.05 s, Meta5D's ghost (a point's search) 72 -> 28 us.
+RegionWalkerOptions suffix_walk()
+{
+  RegionWalkerOptions options;
+  options.simplify = false;
+  return options;
+}
+
 } // namespace
 
 // Per thread: the walkers, the evaluators and the scratch of one search.
@@ -70,7 +82,7 @@ struct Projector::Search
   void visit_enclosure(const RegionWalker::Region& region);
 
   Search(const std::shared_ptr<const Tape>& tape, const detail::SplitTape& split)
-    : point_walker(split.suffix)
+    : point_walker(split.suffix, suffix_walk())
     , box_walker(tape)
     , gradients(tape)
   {
@@ -274,8 +286,8 @@ Maximum Projector::run_search(std::span<const double> kept)
 
   // A lattice of T first (its centre and corners, 9 points of a single range): a lower bound
   // before any box is enclosed, in one evaluation.
-  // Each point's search tries simplifying afresh (the blade of sweep_benchmark.cpp meshes in
-  // 2.5 s instead of 3.9 s at 64^3): its deep boxes simplify where its first ones did not.
+  // Each point's search starts from a walker that has learnt nothing from the last point's (a
+  // value must not depend on which points a thread searched before).
   s.walker->restart();
   const RegionWalker::Region root = s.walker->root();
   s.seed(root);

@@ -1,6 +1,8 @@
 #include "Project/sweep_text.h"
 
 #include "Language/names.h"
+#include "Project/detail/path_text.h"
+#include "Project/path_pieces.h"
 
 #include <cctype>
 #include <cmath>
@@ -13,111 +15,45 @@ namespace
 
 using Point = std::array<double, 3>;
 
-// A number as a HyperFun literal (fixed notation: an exponent is a syntax error).
-std::string literal(double v)
+std::vector<PathPiece> path_pieces(const SweepPath& path)
 {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.9f", std::fabs(v));
-  return v < 0 ? std::string("(-") + text + ")" : std::string(text);
-}
-
-// The control points of segment i: P0..P3 (Catmull-Rom's neighbours; a polyline uses P1, P2).
-std::array<Point, 4> controls(const SweepPath& path, std::size_t i)
-{
-  const std::vector<Point>& p = path.points;
-  const std::size_t n = p.size();
-  const auto at = [&](long k) -> Point
-  {
-    if (path.closed)
-      return p[static_cast<std::size_t>((k % static_cast<long>(n) + static_cast<long>(n)) %
-                                        static_cast<long>(n))];
-    if (k < 0) // mirrored: 2 p0 - p1
-      return { 2 * p[0][0] - p[1][0], 2 * p[0][1] - p[1][1], 2 * p[0][2] - p[1][2] };
-    if (k >= static_cast<long>(n))
-      return { 2 * p[n - 1][0] - p[n - 2][0], 2 * p[n - 1][1] - p[n - 2][1],
-        2 * p[n - 1][2] - p[n - 2][2] };
-    return p[static_cast<std::size_t>(k)];
-  };
-  const long k = static_cast<long>(i);
-  return { at(k - 1), at(k), at(k + 1), at(k + 2) };
-}
-
-// c(u) and c'(u) of one segment as polynomial coefficients per axis: c = sum c[j] u^j.
-struct Segment
-{
-  std::array<std::array<double, 4>, 3> c{};
-};
-
-Segment segment(const SweepPath& path, std::size_t i)
-{
-  const std::array<Point, 4> q = controls(path, i);
-  Segment s;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (path.curve == SweepPath::Curve::Polyline)
-      s.c[a] = { q[1][a], q[2][a] - q[1][a], 0.0, 0.0 };
-    else // uniform Catmull-Rom
-      s.c[a] = { q[1][a], 0.5 * (q[2][a] - q[0][a]),
-        0.5 * (2 * q[0][a] - 5 * q[1][a] + 4 * q[2][a] - q[3][a]),
-        0.5 * (-q[0][a] + 3 * q[1][a] - 3 * q[2][a] + q[3][a]) };
-  }
-  return s;
-}
-
-std::string polynomial(const std::array<double, 4>& c, bool derivative)
-{
-  if (derivative)
-    return literal(c[1]) + " + mu*(" + literal(2 * c[2]) + " + mu*" + literal(3 * c[3]) + ")";
-  return literal(c[0]) + " + mu*(" + literal(c[1]) + " + mu*(" + literal(c[2]) + " + mu*" +
-         literal(c[3]) + "))";
+  std::vector<std::vector<double>> points;
+  for (const Point& p : path.points)
+    points.emplace_back(p.begin(), p.end());
+  return path.curve == SweepPath::Curve::Polyline ? polyline_pieces(points, path.closed)
+                                                   : catmull_rom_pieces(points, path.closed);
 }
 
 // Whether some tangent of the path is within 5 degrees of z (then the frames' up is y).
-bool steep(const SweepPath& path, std::size_t segments)
+bool steep(const std::vector<PathPiece>& pieces)
 {
-  for (std::size_t i = 0; i < segments; ++i)
-  {
-    const Segment s = segment(path, i);
+  for (const PathPiece& piece : pieces)
     for (const double u : { 0.0, 0.25, 0.5, 0.75, 1.0 })
     {
       double d[3], length = 0;
       for (int a = 0; a < 3; ++a)
       {
-        d[a] = s.c[a][1] + u * (2 * s.c[a][2] + u * 3 * s.c[a][3]);
+        d[a] = piece_slope(piece[a], u);
         length += d[a] * d[a];
       }
       if (length > 0 && std::fabs(d[2]) / std::sqrt(length) > std::cos(5.0 * M_PI / 180.0))
         return true;
     }
-  }
   return false;
 }
 
 std::string body(const std::string& name, const std::string& profile, const SweepPath& path)
 {
-  const std::size_t n = path.points.size(), segments = path.closed ? n : n - 1;
+  const std::vector<PathPiece> pieces = path_pieces(path);
   const bool tangent = path.orientation == SweepPath::Orientation::Tangent;
-  std::string out = "  array mp[3];\n  mt = min(max(x[4], 0), 1);\n  ms = mt*" +
-                    std::to_string(segments) + ";\n  mi = floor(ms);\n  if mi > " +
-                    std::to_string(segments - 1) + " then\n    mi = " +
-                    std::to_string(segments - 1) + ";\n  endif;\n  mu = ms - mi;\n";
-  out += "  mcx = 0;\n  mcy = 0;\n  mcz = 0;\n  mdx = 0;\n  mdy = 0;\n  mdz = 1;\n";
-  for (std::size_t i = 0; i < segments; ++i)
-  {
-    const Segment s = segment(path, i);
-    out += "  if mi = " + std::to_string(i) + " then\n";
-    const char* axes = "xyz";
-    for (int a = 0; a < 3; ++a)
-      out += std::string("    mc") + axes[a] + " = " + polynomial(s.c[a], false) + ";\n";
-    for (int a = 0; tangent && a < 3; ++a)
-      out += std::string("    md") + axes[a] + " = " + polynomial(s.c[a], true) + ";\n";
-    out += "  endif;\n";
-  }
+  std::string out = "  array mp[3];\n" +
+                    detail::path_position_text(pieces, "x[4]", { "mcx", "mcy", "mcz" });
   out += "  mvx = x[1] - mcx;\n  mvy = x[2] - mcy;\n  mvz = x[3] - mcz;\n";
   if (!tangent)
     return out + "  mp[1] = mvx;\n  mp[2] = mvy;\n  mp[3] = mvz;\n  " + name + " = " + profile +
            "(mp, a);\n";
-  const bool y_up = steep(path, segments);
+  out += detail::path_slope_text(pieces, { "mdx", "mdy", "mdz" });
+  const bool y_up = steep(pieces);
   // z' = d / |d|; x' = up x z' / |..|; y' = z' x x'.
   out += "  ml = sqrt(mdx*mdx + mdy*mdy + mdz*mdz);\n  mzx = mdx/ml;\n  mzy = mdy/ml;\n"
          "  mzz = mdz/ml;\n";

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "Language/diagnostic.h"
+#include "Project/path_pieces.h"
 
 #include <array>
 #include <string>
@@ -52,17 +53,15 @@ struct SweepText
 SweepText write_sweep(const std::string& name, const std::string& profile, int profile_a_dim,
   const SweepPath& path);
 
-/// A model driven along a path through some of its own coordinates (a metamorphosis along its
-/// animation path: the paper's Meta5D through (x4, x5)): `name(x[m + 1], a[A])` is
-/// `source(y, a)` with y's `path_coordinates` (1-based, distinct) at the polyline's point c(t),
-/// t = x[m + 1] in [0, 1] (point i at i / segments; closed: back to the first at 1), and its
-/// other m coordinates x[1..m] in order. Projected along x[m + 1] it is the union of every
-/// shape the path passes: the animation's ghost. Refused: names that are not identifiers (or
-/// alike), a coordinate outside 1..source_x_dim or given twice, no coordinate left, fewer than
-/// 2 points, a point of the wrong size or not finite.
+/// A model driven along a path through some of its own coordinates, as HyperFun text that the
+/// original reads (path_family.h makes the same model from a compiled one): `name(x[n + 1],
+/// a[A])` is `source(y, a)` with y's `path_coordinates` (1-based, distinct) at the path's point
+/// c(t), t = x[n + 1] in [0, 1], and its other coordinates x[1..n] as they are (the path ones
+/// of x are read by nothing). Projected along x[n + 1] it is the union of every shape the path
+/// passes: the animation's ghost. Refused: names that are not identifiers (or alike), a
+/// coordinate outside 1..source_x_dim or given twice, none, pieces that do not fit.
 SweepText write_path_family(const std::string& name, const std::string& source, int source_x_dim,
-  int source_a_dim, const std::vector<int>& path_coordinates,
-  const std::vector<std::vector<double>>& points, bool closed);
+  int source_a_dim, const std::vector<int>& path_coordinates, const std::vector<PathPiece>& pieces);
 
 /// "polyline" / "catmull-rom", "fixed" / "tangent" (nullopt-like: false for another name).
 bool sweep_curve_from_name(const std::string& text, SweepPath::Curve& curve);

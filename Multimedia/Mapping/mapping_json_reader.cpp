@@ -981,11 +981,30 @@ void read_coordinates(Reader& r, const Json& doc, Spec& spec)
   }
 }
 
-// "animation": duration, fps, path.
+// "animation.ghost": resolution, tolerance.
+void read_ghost(Reader& r, const Json& j, GhostSettings& ghost)
+{
+  if (!r.object(j, "animation.ghost", { "resolution", "tolerance" }))
+  {
+    return;
+  }
+  optional_key(j,
+    "resolution",
+    "animation.ghost",
+    ghost.resolution,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 2, max_resolution); });
+  optional_key(j,
+    "tolerance",
+    "animation.ghost",
+    ghost.tolerance,
+    [&](const Json& v, const std::string& p) { return r.positive(v, p); });
+}
+
+// "animation": duration, fps, path, ghost.
 void read_animation(Reader& r, const Json& doc, AnimationSettings& animation)
 {
   const auto a = doc.find("animation");
-  if (a == doc.end() || !r.object(*a, "animation", { "duration", "fps", "path" }))
+  if (a == doc.end() || !r.object(*a, "animation", { "duration", "fps", "path", "ghost" }))
   {
     return;
   }
@@ -997,6 +1016,12 @@ void read_animation(Reader& r, const Json& doc, AnimationSettings& animation)
     Path path;
     read_path(r, *p, "animation.path", path);
     animation.path = path;
+  }
+  if (const auto g = a->find("ghost"); g != a->end())
+  {
+    GhostSettings ghost;
+    read_ghost(r, *g, ghost);
+    animation.ghost = ghost;
   }
 }
 

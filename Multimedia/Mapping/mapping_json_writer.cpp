@@ -189,6 +189,10 @@ std::string save_mapping(const Spec& spec)
       { "timing", name_of(timings, p->timing) },
       { "key_times", p->key_times } };
   }
+  if (const auto& g = spec.animation.ghost)
+  {
+    animation["ghost"] = Json{ { "resolution", g->resolution }, { "tolerance", g->tolerance } };
+  }
   doc["animation"] = animation;
   doc["spreadsheet"] = Json{ { "cell_size", spec.spreadsheet.cell_size },
     { "spacing", spec.spreadsheet.spacing },

@@ -6,6 +6,8 @@
 
 #include "Mapping/mapping_spec.h"
 
+#include "Project/path_pieces.h"
+
 #include <array>
 #include <cmath>
 #include <string>
@@ -104,6 +106,10 @@ struct Plan
   std::vector<Sample> frames; ///< animation frames, frame k at time k / fps
   std::vector<std::string> dynamic_coordinates;
   std::vector<std::vector<double>> path_polyline; ///< the path, finely sampled (for the inset)
+  /// The path as polynomial pieces (SampledPath::pieces) through the model coordinates
+  /// path_model_coordinates (0-based, in the path's order): the ghost's path. Empty without a path.
+  std::vector<project::PathPiece> path_pieces;
+  std::vector<int> path_model_coordinates;
   std::array<Interval, 2> path_plane{};           ///< the dynamic plane's ranges (inset axes)
 
   /// The elementary shape when nothing varies (a mapping of world and fixed coordinates

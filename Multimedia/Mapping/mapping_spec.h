@@ -165,11 +165,23 @@ struct WorldSettings
   friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
 };
 
+/// The animation's ghost (JSON "animation.ghost"): the union of every shape the path passes, the
+/// model projected along the path's parameter (FRep/Project/path_family.h), meshed and drawn with
+/// the frames' camera as one picture, ghost.png.
+struct GhostSettings
+{
+  int resolution = 64;     ///< samples per axis of its mesh
+  double tolerance = 1e-3; ///< the projection's: within it of the union's value (> 0)
+
+  friend bool operator==(const GhostSettings&, const GhostSettings&) = default;
+};
+
 struct AnimationSettings
 {
   double duration = 10.0; ///< seconds
   double fps = 24.0;
   std::optional<Path> path; ///< required with two or more dynamic coordinates
+  std::optional<GhostSettings> ghost; ///< unset: no ghost (it costs a projected mesh)
 
   friend bool operator==(const AnimationSettings&, const AnimationSettings&) = default;
 };

@@ -203,6 +203,24 @@ std::vector<double> SampledPath::segment_point(std::size_t j, double t) const
   return catmull_rom(p0, p1, p2, p3, t);
 }
 
+std::vector<project::PathPiece> SampledPath::pieces() const
+{
+  std::vector<project::PathPiece> out;
+  for (std::size_t j = 0; j < segments_; ++j)
+  {
+    // The cubic through the segment's points at u = 0, 1/3, 2/3, 1 (Lagrange, in powers of u).
+    const std::vector<double> f0 = segment_point(j, 0.0), f1 = segment_point(j, 1.0 / 3.0);
+    const std::vector<double> f2 = segment_point(j, 2.0 / 3.0), f3 = segment_point(j, 1.0);
+    project::PathPiece piece(dimension_);
+    for (std::size_t a = 0; a < dimension_; ++a)
+      piece[a] = { f0[a], 0.5 * (-11 * f0[a] + 18 * f1[a] - 9 * f2[a] + 2 * f3[a]),
+        4.5 * (2 * f0[a] - 5 * f1[a] + 4 * f2[a] - f3[a]),
+        4.5 * (-f0[a] + 3 * f1[a] - 3 * f2[a] + f3[a]) };
+    out.push_back(std::move(piece));
+  }
+  return out;
+}
+
 std::vector<double> SampledPath::point_at(double s) const
 {
   if (segments_ == 0)

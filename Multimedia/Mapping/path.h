@@ -7,6 +7,8 @@
 #include "Mapping/mapping_plan.h"
 #include "Mapping/mapping_spec.h"
 
+#include "Project/path_pieces.h"
+
 #include <cstddef>
 #include <vector>
 
@@ -45,6 +47,12 @@ public:
 
   /// n >= 2 points evenly spaced along the curve, both ends included (for drawing).
   std::vector<std::vector<double>> polyline(int n) const;
+
+  /// The curve as polynomial pieces (FRep/Project/path_pieces.h), one per segment over the
+  /// segment's own parameter (not arc length): the same points, for what depends only on where
+  /// the path goes (the ghost: the union of every shape on it). Every segment is a cubic (the
+  /// pyramid's three linear stages; a polyline's linear), fitted through 4 of its points.
+  std::vector<project::PathPiece> pieces() const;
 
 private:
   std::vector<double> control(std::ptrdiff_t k) const; ///< wraps when closed

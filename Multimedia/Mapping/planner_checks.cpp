@@ -272,6 +272,8 @@ void Planner::check_animation()
   Plan& p = plan();
   p.dynamic_coordinates = path.coordinates;
   p.path_polyline = path_->polyline(static_cast<int>(path_->segment_count()) * 32 + 1);
+  p.path_pieces = path_->pieces();
+  p.path_model_coordinates = dynamic_;
   for (std::size_t k = 0; k < 2 && k < dynamic_.size(); ++k)
   {
     p.path_plane[k] = find(static_cast<std::size_t>(dynamic_[k]), Channel::Type::Dynamic)->range;

@@ -50,7 +50,7 @@ Products choose_products(const Job& job)
     if (std::find(known.begin(), known.end(), name) == known.end())
     {
       throw ProductionError("no product is called '" + name +
-                            "' (spreadsheet, path, frames, audio, movie, shape)");
+                            "' (spreadsheet, path, frames, audio, movie, shape, ghost)");
     }
   }
   auto wanted = [&](const char* what)
@@ -63,7 +63,9 @@ Products choose_products(const Job& job)
   p.audio = (wanted("audio") || wanted("movie")) && !plan.frames.empty() && plan.voice_count > 0;
   p.movie = wanted("movie") && !plan.frames.empty();
   p.shape = wanted("shape") && plan.cells.empty() && plan.frames.empty();
-  if (!p.spreadsheet && !p.path && !p.frames && !p.audio && !p.shape)
+  p.ghost = wanted("ghost") && job.spec().animation.ghost && !plan.frames.empty() &&
+            !plan.dynamic_coordinates.empty();
+  if (!p.spreadsheet && !p.path && !p.frames && !p.audio && !p.shape && !p.ghost)
   {
     throw ProductionError("the mapping has nothing of --only to produce (spreadsheet needs a "
                           "spreadsheet coordinate; path, frames, audio and movie a dynamic one; "

@@ -4,7 +4,8 @@
 //   3. output   (setup.cpp)    the output directory and the worker count;
 //   4. framing  (setup.cpp)    the box every picture frames: the solids' (Scene/framing.h);
 //   5. pictures (pictures.cpp) the spreadsheet, the shape alone, the path;
-//   6. frames   (frames.cpp)   the animation frames, resumable (fingerprint);
+//   6. frames   (frames.cpp)   the animation frames, resumable (fingerprint), and the ghost
+//               (ghost.cpp)    the union of every shape they show, when the mapping asks;
 //   7. media    (media.cpp)    the sound track and the movie;
 //   8. manifest (manifest.cpp) manifest.json.
 // The rendering phases share the Workers (workers.cpp: per-worker picture kits and mesher pools,
@@ -107,6 +108,7 @@ struct Products
   bool audio = false;
   bool movie = false;
   bool shape = false; ///< nothing varies (world and fixed coordinates only)
+  bool ghost = false; ///< the mapping asks for it (animation.ghost) and something moves
 };
 
 /// What `only` asks for among what the plan can make; a ProductionError when that is nothing.
@@ -204,6 +206,9 @@ void render_shape(const Job& job, Workers& workers, Record& record);
 
 /// path.png: the path of the two dynamic coordinates.
 void draw_path(const Job& job, Workers& workers, Record& record);
+
+/// ghost.png: the union of every shape the animation shows (ghost.cpp).
+void render_ghost(const Job& job, Workers& workers, Record& record);
 
 /// Where the frames go: frames/frame_%05d.png under the output directory.
 struct FrameFiles

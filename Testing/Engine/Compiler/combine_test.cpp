@@ -558,5 +558,50 @@ TEST(CombineModel, BadOperandsAreErrorValues)
   EXPECT_FALSE(combine(Operation::Union, wrong, disc).ok());
 }
 
+// compose: F(g_1(y), g_2(y)) is, bit for bit, the program that calls F on the g's values (the
+// same operations on the same doubles); fixing a coordinate of the composed model fixes it in the
+// g's; a coordinate may feed F directly or be read by nothing; every misuse is refused.
+TEST(ComposeModel, EqualsTheProgramThatCallsTheOuterModelOnTheFunctions)
+{
+  const auto f = compile_text("f(x[2], a[1]) { f = a[1] - (x[1]*x[1] + x[2]*x[2]); }");
+  const auto g = compile_text("g(x[3], a[1]) { g = sin(x[3]) + x[2]; }");
+  const auto expected = compile_text(
+    "e(x[3], a[1]) { my = sin(x[3]) + x[2]; e = 2 - (x[1]*x[1] + my*my); }");
+  Operand outer{ f, {} };
+  outer.specialisation.parameters = { 2.0 };
+  const CombineResult composed =
+    compose(outer, { CoordinateFunction{ 0, {} }, CoordinateFunction{ -1, Operand{ g, {} } } }, 3);
+  ASSERT_TRUE(composed.ok()) << composed.error;
+  EXPECT_EQ(composed.model->name(), "compose(f)");
+  EXPECT_EQ(composed.model->x_dim(), 3);
+  expect_same_tapes(expected->tape(), composed.model->tape(), sample_points(3, 300));
+
+  Specialisation fixed; // x3 fixed at 0.7: the g's see it too
+  fixed.fixed = { std::nullopt, std::nullopt, 0.7 };
+  expect_same_tapes(expected->specialise(fixed), composed.model->specialise(fixed),
+    sample_points(2, 100, 11));
+  IntervalEvaluator intervals(composed.model->tape());
+  const Interval box[3] = { { -0.1, 0.1 }, { -0.1, 0.1 }, { -0.1, 0.1 } };
+  const IntervalResult r = intervals.evaluate(box);
+  const double lowest = 2.0 - (0.01 + std::pow(std::sin(0.1) + 0.1, 2)); // at a corner
+  EXPECT_LE(r.value.lo, lowest); // sound, and as tight as the composed tape makes it
+  EXPECT_GE(r.value.lo, lowest - 0.05);
+  EXPECT_GE(r.value.hi, 2.0);
+
+  const auto refused = [&](Operand o, std::vector<CoordinateFunction> c, int x_dim,
+                         const char* why)
+  {
+    const CombineResult bad = compose(std::move(o), std::move(c), x_dim);
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(bad.error.find(why), std::string::npos) << bad.error;
+  };
+  const CoordinateFunction x1{ 0, {} }, gy{ -1, Operand{ g, {} } };
+  refused(Operand{}, { x1, x1 }, 3, "outer model is missing");
+  refused(outer, { x1 }, 3, "has 2 free coordinates but 1 are given");
+  refused(outer, { x1, CoordinateFunction{ 3, {} } }, 3, "is x4, not one of x1..x3");
+  refused(outer, { x1, gy }, 2, "(g) has 3 free coordinates, the composed model 2");
+  refused(outer, { x1, x1 }, 0, "at least one coordinate");
+}
+
 } // namespace
 } // namespace frep

@@ -3,6 +3,7 @@
 // turned by the tangent lies along the path; bad paths are refused with the reason.
 #include "Compiler/load_model.h"
 #include "Eval/point_evaluator.h"
+#include "Project/path_family.h"
 #include "Project/projection.h"
 #include "Project/sweep_text.h"
 
@@ -139,31 +140,22 @@ TEST(SweepText, BadPathsAreRefusedWithTheReason)
 } // namespace
 
 // A ball in (x1, x2, x3) whose centre's x1, x2 are the model's x4, x5, driven along an L of
-// (x4, x5) points: at the path's points it is the ball there; projected along the family's x4 it
-// is the union of the balls along the L (the distance to the L, closed form), within the
-// tolerance; bad requests name the reason.
-TEST(PathFamilyText, AModelAlongAPathThroughItsCoordinatesProjectsToTheUnion)
-{
-  const char* source =
-    "moved(x[5], a[1]) { moved = 0.25 - ((x[1] - x[4])^2 + (x[2] - x[5])^2 + x[3]^2); }\n";
-  const std::vector<std::vector<double>> points = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
-  const frep::project::SweepText family =
-    frep::project::write_path_family("family", "moved", 5, 1, { 4, 5 }, points, false);
-  ASSERT_TRUE(family.ok()) << frep::format_diagnostics(family.diagnostics);
-  frep::LoadOptions options;
-  options.object = "family";
-  const frep::LoadedModel loaded = frep::load_model(
-    frep::ModelSource::from_text(std::string(source) + family.text, "family.hf"), options);
-  ASSERT_TRUE(loaded.ok()) << loaded.message() << "\n" << family.text;
-  ASSERT_EQ(loaded.model->x_dim(), 4);
-  EXPECT_NEAR(value(*loaded.model, { 1, 0, 0, 0.5 }), 0.25, 1e-12);    // at the corner
-  EXPECT_NEAR(value(*loaded.model, { 1, 0.5, 0, 0.75 }), 0.25, 1e-12); // half way up
-  EXPECT_NEAR(value(*loaded.model, { 0.5, 0, 0.3, 0.25 }), 0.16, 1e-12);
+// (x4, x5) points, as text (write_path_family) and as a composed model (path_family): the same
+// values; at the path's points it is the ball there; projected along the family's x6 it is the
+// union of the balls along the L (the distance to the L, closed form), within the tolerance;
+// bad requests name the reason.
+const char* kMoved =
+  "moved(x[5], a[1]) { moved = 0.25 - ((x[1] - x[4])^2 + (x[2] - x[5])^2 + x[3]^2); }\n";
 
+void expect_union_of_balls_along_the_l(const std::shared_ptr<const frep::Model>& family)
+{
+  ASSERT_EQ(family->x_dim(), 6);
+  EXPECT_NEAR(value(*family, { 1, 0, 0, 9, 9, 0.5 }), 0.25, 1e-12);    // at the corner
+  EXPECT_NEAR(value(*family, { 1, 0.5, 0, 9, 9, 0.75 }), 0.25, 1e-12); // half way up
+  EXPECT_NEAR(value(*family, { 0.5, 0, 0.3, 0, 0, 0.25 }), 0.16, 1e-12);
   frep::project::ProjectionOptions projection;
   projection.band = INFINITY;
-  const frep::LoadedModel ghost =
-    frep::project::project(loaded.model, { { 4, 0, 1 } }, projection);
+  const frep::LoadedModel ghost = frep::project::project(family, { { 6, 0, 1 } }, projection);
   ASSERT_TRUE(ghost.ok()) << ghost.message();
   std::mt19937 random(29);
   std::uniform_real_distribution<double> u(-0.6, 1.6);
@@ -174,23 +166,66 @@ TEST(PathFamilyText, AModelAlongAPathThroughItsCoordinatesProjectsToTheUnion)
     const double bottom = std::pow(std::clamp(p[0], 0.0, 1.0) - p[0], 2) + p[1] * p[1];
     const double right = std::pow(p[0] - 1, 2) + std::pow(std::clamp(p[1], 0.0, 1.0) - p[1], 2);
     const double exact = 0.25 - (std::min(bottom, right) + p[2] * p[2]);
-    const double v = value(*ghost.model, { p[0], p[1], p[2] });
+    const double v = value(*ghost.model, { p[0], p[1], p[2], 0, 0 });
     EXPECT_LE(v, exact + 1e-9);
     EXPECT_GE(v, exact - projection.tolerance - 1e-9);
   }
+}
 
+TEST(PathFamilyText, AModelAlongAPathThroughItsCoordinatesProjectsToTheUnion)
+{
+  const std::vector<std::vector<double>> points = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+  const std::vector<frep::project::PathPiece> pieces = frep::project::polyline_pieces(points, false);
+  const frep::project::SweepText family =
+    frep::project::write_path_family("family", "moved", 5, 1, { 4, 5 }, pieces);
+  ASSERT_TRUE(family.ok()) << frep::format_diagnostics(family.diagnostics);
+  frep::LoadOptions options;
+  options.object = "family";
+  const frep::LoadedModel text = frep::load_model(
+    frep::ModelSource::from_text(std::string(kMoved) + family.text, "family.hf"), options);
+  ASSERT_TRUE(text.ok()) << text.message() << "\n" << family.text;
+  expect_union_of_balls_along_the_l(text.model);
+
+  const frep::LoadedModel moved = frep::load_model(frep::ModelSource::from_text(kMoved, "moved.hf"));
+  ASSERT_TRUE(moved.ok()) << moved.message();
+  const frep::LoadedModel composed = frep::project::path_family(moved.model, { 4, 5 }, pieces, {});
+  ASSERT_TRUE(composed.ok()) << composed.message();
+  expect_union_of_balls_along_the_l(composed.model);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  for (int i = 0; i < 100; ++i) // the composed tape computes what the text computes
+  {
+    const std::vector<double> x = { u(random), u(random), u(random), u(random), u(random), u(random) };
+    EXPECT_NEAR(value(*composed.model, x), value(*text.model, x), 1e-12);
+  }
+  for (const auto& [coordinates, why] :
+    std::vector<std::pair<std::vector<int>, std::string>>{ { { 4, 4 }, "given twice" },
+      { { 6 }, "x6 is not one of x1..x5" }, { {}, "at least one" } })
+  {
+    const frep::LoadedModel bad = frep::project::path_family(moved.model, coordinates, pieces, {});
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(bad.message().find(why), std::string::npos) << bad.message();
+  }
+  EXPECT_NE(frep::project::path_family(moved.model, { 4 }, pieces, {}).message().find(
+              "has 2 coordinates, the path 1"),
+    std::string::npos);
+}
+
+TEST(PathFamilyText, BadRequestsNameTheReason)
+{
   const auto refused = [](const std::vector<int>& coordinates,
                          const std::vector<std::vector<double>>& path, const char* why)
   {
-    const frep::project::SweepText bad =
-      frep::project::write_path_family("family", "moved", 5, 1, coordinates, path, true);
+    const frep::project::SweepText bad = frep::project::write_path_family(
+      "family", "moved", 5, 1, coordinates, frep::project::polyline_pieces(path, true));
     EXPECT_FALSE(bad.ok());
     EXPECT_NE(frep::format_diagnostics(bad.diagnostics).find(why), std::string::npos)
       << frep::format_diagnostics(bad.diagnostics);
   };
-  refused({ 4, 4 }, points, "given twice");
-  refused({ 6 }, { { 0 }, { 1 } }, "x6 is not one of x1..x5");
-  refused({ 4, 5 }, { { 0, 0 } }, "at least 2 points");
-  refused({ 4, 5 }, { { 0, 0 }, { 1 } }, "point 2 has 1 values");
-  refused({ 1, 2, 3, 4, 5 }, { { 0, 0, 0, 0, 0 }, { 1, 1, 1, 1, 1 } }, "must leave one");
+  const std::vector<std::vector<double>> triangle = { { 0, 0 }, { 1, 0 }, { 1, 1 } };
+  refused({ 4, 4 }, triangle, "given twice");
+  refused({ 6 }, { { 0 }, { 1 }, { 2 } }, "x6 is not one of x1..x5");
+  refused({ 4, 5 }, { { 0, 0 } }, "at least one piece");
+  refused({ 4 }, triangle, "has 2 coordinates, the path 1");
+  refused({}, triangle, "at least one of the source's coordinates");
 }

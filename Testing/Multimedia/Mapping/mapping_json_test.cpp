@@ -152,6 +152,7 @@ TEST(MappingJson, RoundTripOfEveryKindOfField)
   path.timing = Path::Timing::Keys;
   path.key_times = { 0, 1, 3.5 };
   s.animation.path = path;
+  s.animation.ghost = GhostSettings{ 40, 0.002 };
   s.spreadsheet = { 128, 0.25, false };
   s.render.width = 640;
   s.render.height = 480;
@@ -192,6 +193,23 @@ TEST(MappingJson, FpsMustBePositive)
 {
   const LoadResult r = load_mapping(replaced(example_mapping, "\"fps\": 24", "\"fps\": 0"));
   EXPECT_TRUE(has_error(r, "animation.fps", "must be > 0")) << format_errors(r.errors);
+}
+
+TEST(MappingJson, GhostSettingsAreChecked)
+{
+  const LoadResult unknown = load_mapping(replaced(
+    example_mapping, "\"fps\": 24", "\"fps\": 24, \"ghost\": { \"size\": 2 }"));
+  EXPECT_TRUE(has_error(unknown, "animation.ghost.size", "unknown key \"size\""))
+    << format_errors(unknown.errors);
+  const LoadResult r = load_mapping(replaced(example_mapping, "\"fps\": 24",
+    "\"fps\": 24, \"ghost\": { \"resolution\": 1, \"tolerance\": 0 }"));
+  EXPECT_TRUE(has_error(r, "animation.ghost.resolution", "must be from 2 to 8192"))
+    << format_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "animation.ghost.tolerance", "must be > 0")) << format_errors(r.errors);
+  const LoadResult defaults =
+    load_mapping(replaced(example_mapping, "\"fps\": 24", "\"fps\": 24, \"ghost\": {}"));
+  ASSERT_TRUE(defaults.ok()) << format_errors(defaults.errors);
+  EXPECT_EQ(defaults.spec.animation.ghost, GhostSettings{});
 }
 
 TEST(MappingJson, UnknownKeysAreErrors)

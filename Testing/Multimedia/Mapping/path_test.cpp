@@ -185,3 +185,73 @@ TEST(SampledPath, RepeatedPointsDoNotBreakTheSpline)
 
 } // namespace
 } // namespace frep::mapping
+
+namespace frep::mapping
+{
+namespace
+{
+
+// Distance from p to the pieces' curve: the nearest of 200 samples per piece, refined by a
+// ternary search around the nearest (the pieces are smooth: this finds the foot of p on them).
+double distance_to_pieces(const std::vector<project::PathPiece>& pieces, const std::vector<double>& p)
+{
+  const auto at = [&](const project::PathPiece& piece, double u)
+  {
+    std::vector<double> q(piece.size());
+    for (std::size_t a = 0; a < piece.size(); ++a)
+      q[a] = project::piece_value(piece[a], u);
+    return distance(q, p);
+  };
+  std::size_t piece = 0;
+  int sample = 0;
+  double best = 1e9;
+  for (std::size_t j = 0; j < pieces.size(); ++j)
+    for (int k = 0; k <= 200; ++k)
+      if (const double d = at(pieces[j], k / 200.0); d < best)
+      {
+        best = d;
+        piece = j;
+        sample = k;
+      }
+  double lo = std::max(0.0, (sample - 1) / 200.0), hi = std::min(1.0, (sample + 1) / 200.0);
+  for (int step = 0; step < 100; ++step)
+  {
+    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (at(pieces[piece], m1) < at(pieces[piece], m2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  best = std::min(best, at(pieces[piece], 0.5 * (lo + hi)));
+  return best;
+}
+
+// The pieces are the curve the frames follow: they start and end at the control points, and
+// every point of the sampled curve lies on them (centripetal Catmull-Rom on uneven spacing, and
+// a polyline).
+TEST(SampledPath, PiecesAreTheCurve)
+{
+  for (auto interpolation : { Path::Interpolation::Polyline, Path::Interpolation::CatmullRom })
+  {
+    Path spec;
+    spec.coordinates = { "x4", "x5" };
+    spec.points = { { 0, 0 }, { 1, 0 }, { 1.2, 2 }, { 0, 1.5 } };
+    spec.closed = true;
+    spec.interpolation = interpolation;
+    const auto r = SampledPath::make(spec);
+    ASSERT_TRUE(r.ok());
+    const std::vector<project::PathPiece> pieces = r.path.pieces();
+    ASSERT_EQ(pieces.size(), 4u);
+    for (std::size_t j = 0; j < pieces.size(); ++j)
+      for (std::size_t a = 0; a < 2; ++a)
+      {
+        EXPECT_EQ(project::piece_value(pieces[j][a], 0.0), spec.points[j][a]);
+        EXPECT_NEAR(project::piece_value(pieces[j][a], 1.0), spec.points[(j + 1) % 4][a], 1e-12);
+      }
+    for (const auto& p : r.path.polyline(101))
+      EXPECT_LT(distance_to_pieces(pieces, p), 1e-9);
+  }
+}
+
+} // namespace
+} // namespace frep::mapping

@@ -246,6 +246,58 @@ TEST(Production, ProjectedCoordinatesAreCutFromTheProjectionAndListed)
   EXPECT_GT(report.triangles, fixed.triangles + fixed.triangles / 4);
 }
 
+// The ghost (animation.ghost): a ball carried by x4, x5 along an L of the path is drawn as the
+// union of the balls along it: ghost.png, listed in the manifest with its mesh; about three
+// times the surface of the ghost of a path that hardly moves (one ball), and the stage's
+// line names it. --only ghost makes it alone.
+TEST(Production, TheGhostIsTheUnionOfEveryShapeOnThePath)
+{
+  const char* moved = R"(
+moved(x[5], a[1]) { moved = 0.25 - ((x[1] - x[4])^2 + (x[2] - x[5])^2 + x[3]^2); }
+)";
+  const auto ghost_of = [&](const std::string& points, const std::string& name)
+  {
+    ProductionInputs in = inputs(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2, 2] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2, 2] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-2, 2] }],
+    "x4": [{ "type": "dynamic", "range": [0, 1] }],
+    "x5": [{ "type": "dynamic", "range": [0, 1] }] },
+  "animation": { "duration": 4, "fps": 1, "ghost": { "resolution": 24 },
+    "path": { "coordinates": ["x4", "x5"], "points": )" + points + R"(,
+              "interpolation": "polyline" } },
+  "world": { "resolution": 16 },
+  "render": { "width": 64, "height": 48 } })",
+      moved);
+    ProductionOptions run;
+    run.directory = fresh(name);
+    run.threads = 2;
+    run.only = { "ghost" };
+    const ProductionReport report = frep::mapping::produce(in, run);
+    EXPECT_TRUE(report.ok()) << why(report);
+    EXPECT_TRUE(fs::exists(run.directory / "ghost.png"));
+    EXPECT_FALSE(fs::exists(run.directory / "frames"));
+    EXPECT_TRUE(temporaries(run.directory).empty());
+    const nlohmann::json manifest = nlohmann::json::parse(report.manifest);
+    for (const nlohmann::json& f : manifest["files"])
+      if (f["kind"] == "ghost")
+      {
+        EXPECT_EQ(f["file"], "ghost.png");
+        EXPECT_EQ(f["resolution"], 24);
+        EXPECT_EQ(f["coordinates"], nlohmann::json({ "x4", "x5" }));
+        return f["triangles"].get<std::size_t>();
+      }
+    ADD_FAILURE() << "no ghost in " << report.manifest;
+    return std::size_t{ 0 };
+  };
+  const std::size_t l = ghost_of("[[0, 0], [1, 0], [1, 1]]", "ghost_l");
+  const std::size_t ball = ghost_of("[[0, 0], [0.001, 0]]", "ghost_ball");
+  EXPECT_GT(ball, 100u);
+  EXPECT_GT(l, 2 * ball);
+  EXPECT_LT(l, 4 * ball);
+}
+
 TEST(Production, FramesAreKeptOnlyForTheSameInputs)
 {
   const fs::path out = fresh("resume");

@@ -146,12 +146,18 @@ ExtractResult run_extraction(const std::shared_ptr<const Tape>& tape,
   const auto start = Clock::now();
   const GridFrame frame(grid, dimension);
   const std::shared_ptr<ThreadPool> pool = options.thread_pool();
-  // Blocks of 4 leaves per axis: enough blocks to balance the threads, few enough that joining
-  // their pieces is cheap.
-  const std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
-
+  // Blocks of 4 leaves per axis, few enough that joining their pieces is cheap; a grid with
+  // fewer than 64 of them (a 32^3 grid is one block) is cut into blocks of 2 leaves or 1, so the
+  // threads share it (a costly model, such as a projection, is drawn on small grids). Decided by
+  // the grid alone: the mesh does not depend on the number of threads.
   const CellBox range = cell_range(grid, dimension);
-  const std::vector<CellBox> blocks = blocks_of(range, dimension, block_cells);
+  std::int64_t block_cells = std::int64_t(options.leaf_cells) * 4;
+  std::vector<CellBox> blocks = blocks_of(range, dimension, block_cells);
+  while (blocks.size() < 64 && block_cells > options.leaf_cells)
+  {
+    block_cells /= 2;
+    blocks = blocks_of(range, dimension, block_cells);
+  }
   std::vector<std::unique_ptr<BoxWalker>> walkers(static_cast<std::size_t>(pool->size()));
   std::vector<Piece> pieces(blocks.size());
   std::size_t block_count = 0;

@@ -1,8 +1,10 @@
 // What is computed per point once the mesh is joined: roots refined along their grid edge,
-// outward normals from the model's gradient (differences of F), and s[] attributes.
+// outward normals from the model's gradient (differences of F, or forward-mode gradients where
+// the tape calls functions with exact derivatives), and s[] attributes.
 #include "Mesh/detail/extraction_common.h"
 
 #include "Eval/batch_evaluator.h"
+#include "Eval/gradient_evaluator.h"
 #include "Eval/interval_evaluator.h"
 #include "Eval/point_evaluator.h"
 #include "Eval/region_walker.h"
@@ -425,7 +427,51 @@ void brick_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     });
 }
 
-void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
+/// Whether the tape calls a function with exact derivatives (a projection, a mesh's or a volume's
+/// distance, a tape function): each call is the costly part of a point, and a forward-mode
+/// gradient makes it once per point (its own derivatives exact) where differences make it four
+/// times. A projection's values are only within its tolerance of the maximum, too far apart for
+/// differences of 1e-3 of a cell; its gradient (F's at the maximiser) is right.
+bool calls_with_gradients(const Tape& tape)
+{
+  return std::any_of(tape.calls.begin(), tape.calls.end(),
+    [](const CallSite& c) { return c.function && c.function->has_jacobian(); });
+}
+
+/// The normals of the points that need one from forward-mode gradients, chunks on the pool.
+void gradient_normals(const std::shared_ptr<const Tape>& tape,
+  const std::vector<std::uint64_t>& keys, const std::shared_ptr<ThreadPool>& pool,
+  Surface& surface, std::vector<unsigned char>& missing)
+{
+  const std::size_t count = surface.point_count();
+  const std::size_t chunks = (count + chunk_points - 1) / chunk_points;
+  std::vector<std::unique_ptr<GradientEvaluator>> evaluators(static_cast<std::size_t>(pool->size()));
+  pool->parallel_for(chunks,
+    [&](std::size_t chunk, int slot)
+    {
+      auto& evaluator = evaluators[static_cast<std::size_t>(slot)];
+      if (!evaluator)
+        evaluator = std::make_unique<GradientEvaluator>(tape);
+      std::array<double, 3> g{};
+      const std::size_t end = std::min(count, (chunk + 1) * chunk_points);
+      for (std::size_t p = chunk * chunk_points; p < end; ++p)
+      {
+        if (!needs_difference_normal(keys[p]))
+          continue;
+        evaluator->evaluate(std::span<const double>(&surface.points[3 * p], 3), g);
+        const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (!(length > 0) || !std::isfinite(length))
+        {
+          missing[p] = 1;
+          continue;
+        }
+        for (int a = 0; a < 3; ++a) // F grows inwards: the outward normal is -grad F
+          surface.normals[3 * p + static_cast<std::size_t>(a)] = static_cast<float>(-g[a] / length);
+      }
+    });
+}
+
+void point_normals(const std::shared_ptr<const Tape>& tape, const GridFrame& frame,
   const std::vector<std::uint64_t>& keys, const ExtractOptions& options,
   const std::shared_ptr<ThreadPool>& pool, Surface& surface, std::vector<unsigned char>& missing)
 {
@@ -434,7 +480,11 @@ void difference_normals(const std::shared_ptr<const Tape>& tape, const GridFrame
   {
     h[a] = 1e-3 * frame.step[a];
   }
-  if (options.cull && options.simplify && may_simplify(*tape))
+  if (calls_with_gradients(*tape))
+  {
+    gradient_normals(tape, keys, pool, surface, missing);
+  }
+  else if (options.cull && options.simplify && may_simplify(*tape))
   {
     brick_normals(tape, frame, keys, options, pool, h, surface, missing);
   }
@@ -504,7 +554,7 @@ void finish_points(const std::shared_ptr<const Tape>& tape, const GridFrame& fra
     surface.normals.assign(3 * count, 0.0f);
     std::vector<unsigned char> missing(count, 0);
     cap_normals(frame, keys, surface);
-    difference_normals(tape, frame, keys, options, pool, surface, missing);
+    point_normals(tape, frame, keys, options, pool, surface, missing);
     fill_missing_normals(surface, missing);
   }
   const int attribute_count = static_cast<int>(tape->outputs.size()) - 1;

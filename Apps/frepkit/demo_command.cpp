@@ -143,6 +143,12 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
   cmd->add_option("--resolution", o.resolution, "grid samples per cell and frame (default 128)")
     ->check(CLI::Range(8, 1024));
   cmd
+    ->add_option("--ghost",
+      o.ghost,
+      "resolution of the ghost (ghost.png: the union of every shape of the animation, Meta5D "
+      "projected along its path; default: the mapping's 32), 0 for none")
+    ->check(CLI::Range(0, 1024) & !CLI::Range(1, 1));
+  cmd
     ->add_option("--method",
       o.method,
       "draw cells and frames by 'mesh' (quick drafts) or 'raycast' (default: the mapping's: "
@@ -195,6 +201,7 @@ int run_demo(const DemoOptions& options)
   map.name = "homotopic";
   map.frames = options.frames;
   map.resolution = options.resolution;
+  map.ghost = options.ghost;
   map.method = options.method;
   map.force = options.force;
   map.threads = options.threads;

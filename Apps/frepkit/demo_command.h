@@ -26,6 +26,7 @@ struct DemoOptions
   std::string examples; ///< the Examples folder; default: the source tree's, else next to the tool
   std::optional<int> frames;
   std::optional<int> resolution;
+  std::optional<int> ghost; ///< the ghost's resolution (default: the mapping's 32), 0: none
   std::optional<std::string> method; ///< overrides the mapping's render.method (mesh | raycast)
   int mesh_grid = 256;               ///< grid of the key shapes' meshes
   std::string align = "size";        ///< Meta5D's keys aligned: none (the paper), centroid or size

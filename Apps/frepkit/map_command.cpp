@@ -37,7 +37,7 @@ std::string read_file(const std::string& path, const char* what)
   return text.str();
 }
 
-// The mapping file, checked, with --resolution, --frames and --method applied.
+// The mapping file, checked, with --resolution, --ghost, --frames and --method applied.
 mapping::Spec load_spec(const MapOptions& options)
 {
   const mapping::LoadResult loaded =
@@ -58,6 +58,17 @@ mapping::Spec load_spec(const MapOptions& options)
     if (spec.animation.ghost) // a quick run is quick for the ghost too
     {
       spec.animation.ghost->resolution = std::min(spec.animation.ghost->resolution, *options.resolution);
+    }
+  }
+  if (options.ghost)
+  {
+    if (*options.ghost == 0)
+      spec.animation.ghost.reset();
+    else
+    {
+      if (!spec.animation.ghost)
+        spec.animation.ghost = mapping::GhostSettings{};
+      spec.animation.ghost->resolution = *options.ghost;
     }
   }
   if (options.frames)
@@ -179,6 +190,12 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
       "grid samples along the longest world axis (default: the mapping's world.resolution; the "
       "ghost's animation.ghost.resolution is lowered to it)")
     ->check(CLI::Range(2, 4096));
+  cmd
+    ->add_option("--ghost",
+      o.ghost,
+      "draw the animation's ghost (ghost.png: the union of every shape the path passes) at this "
+      "resolution, 0 for none (default: the mapping's animation.ghost)")
+    ->check(CLI::Range(0, 8192) & !CLI::Range(1, 1));
   cmd->add_option("--frames", o.frames, "number of frames (default: duration x fps)")
     ->check(CLI::Range(1, 1000000));
   cmd

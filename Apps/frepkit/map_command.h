@@ -32,6 +32,9 @@ struct MapOptions
   std::vector<double> parameters;
   std::optional<int> resolution; ///< overrides world.resolution
   std::optional<int> frames;     ///< overrides the frame count (duration * fps)
+  /// animation.ghost's resolution (the ghost added with its default tolerance if the mapping has
+  /// none); 0: no ghost. Applied after `resolution`.
+  std::optional<int> ghost;
   /// Overrides render.method for cells and frames alike: "mesh" (quick drafts) or "raycast".
   std::optional<std::string> method;
   std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape, ghost

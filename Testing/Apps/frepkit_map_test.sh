@@ -101,6 +101,13 @@ if [[ "$err" != *"kept from an earlier run"* ]]; then pass "--force renders ever
 run "--only spreadsheet" 0 "$frepkit" map ball.hf ball.json -O only --only spreadsheet --resolution 24
 if [ -s only/spreadsheet.png ] && [ ! -e only/frames ] && [ ! -e only/ball.mp4 ]; then pass "--only spreadsheet writes only it"; else fail "--only spreadsheet: $(ls -R only)"; fi
 
+# --ghost adds the ghost the mapping lacks (the growing ball's: the largest ball) at its resolution.
+run "--ghost 16 --only ghost" 0 "$frepkit" map ball.hf ball.json -O ghost --ghost 16 --only ghost
+if [ -s ghost/ghost.png ] && [ ! -e ghost/frames ]; then pass "--only ghost writes only ghost.png"; else fail "--only ghost: $(ls -R ghost)"; fi
+expect_in "the ghost at --ghost's resolution" "$(json ghost/manifest.json "[f['resolution'] for f in d['files'] if f['kind'] == 'ghost']")" "[16]"
+run "--ghost 1" 1 "$frepkit" map ball.hf ball.json -O ghost1 --ghost 1
+expect_in "--ghost 1 refused" "$err" "--ghost"
+
 # Bad mapping files: a clear error naming the place, exit code 1, nothing written.
 bad() { # NAME JSON EXPECTED-TEXT
   printf '%s\n' "$2" >bad.json

@@ -2,7 +2,7 @@
 # The main job end to end at the demo's own settings (ray-cast cells, meshed floor-scene frames at 128^3),
 # with 48 frames instead of 240 to keep the suite short: every output exists; the spreadsheet
 # has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
-# count and an audio stream of the same duration; the key shapes' STL files are closed
+# count and an audio stream of the same duration; the ghost is listed at the resolution asked; the key shapes' STL files are closed
 # meshes; the manifest lists everything and names the model drawn (meta5d.hf in the output folder,
 # written from the key files by the metamorphosis component, keys aligned by size), whose corners
 # are the key files' objects exactly. Without VTK, --normalise distance is refused (its files are .vti).
@@ -24,9 +24,9 @@ cd "$work" || exit 1
 field() { echo "$2" | awk -v k="$1" '{ for (i = 1; i < NF; i++) if ($i == k) print $(i + 1) }'; }
 near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= t * m) }'; }
 
-run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48
+run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48 --ghost 24
 echo "$err"
-for f in meta5d.hf spreadsheet.png path.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
+for f in meta5d.hf spreadsheet.png path.png ghost.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
   if [ -s "demo/$f" ]; then pass "demo/$f written"; else fail "demo/$f missing"; fi
 done
 
@@ -67,7 +67,10 @@ for shape in cat robot nihon roblet; do
 done
 
 count=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print(len(m['files']))")
-expect_in "manifest lists 4 pictures/sounds/movies + 4 meshes" "files $count" "files 9"
+expect_in "manifest lists 5 pictures/sounds/movies + 4 meshes" "files $count" "files 10"
+# The ghost (Meta5D projected along its path) at the resolution asked, a mesh with triangles.
+line=$(/usr/bin/python3 -c "import json; g = [f for f in json.load(open('demo/manifest.json'))['files'] if f['kind'] == 'ghost'][0]; print('resolution', g['resolution'], 'tolerance', g['tolerance'], 'coordinates', ','.join(g['coordinates']), 'meshed', g['triangles'] > 1000)")
+expect_in "manifest lists the ghost" "$line" "resolution 24 tolerance 0.001 coordinates x4,x5 meshed True"
 
 line=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print('model', m['model'], 'object', m['object'], 'alignment', m['morph']['alignment'], 'keys', len(m['morph']['keys']))")
 expect_in "manifest names the model drawn" "$line" "model meta5d.hf object meta5d alignment size keys 4"
@@ -87,11 +90,12 @@ done
 # corners are inside exactly where the keys are.
 if [ "$vtk" = novtk ]; then
   run "demo --normalise distance without VTK" 1 "$frepkit" demo homotopic -O nd --frames 2 \
-    --resolution 16 --mesh-grid 16 --method mesh --normalise distance -q
+    --resolution 16 --mesh-grid 16 --method mesh --normalise distance --ghost 0 -q
   expect_in "needs VTK" "$err" "--normalise distance needs a frepkit built with VTK"
 else
   run "demo --normalise distance" 0 "$frepkit" demo homotopic -O nd --frames 2 --resolution 16 \
-    --mesh-grid 16 --method mesh --normalise distance -q
+    --mesh-grid 16 --method mesh --normalise distance --ghost 0 -q
+  if [ ! -e nd/ghost.png ]; then pass "--ghost 0: no ghost"; else fail "--ghost 0 drew a ghost"; fi
   shapes=$(/usr/bin/python3 -c "import json; m = json.load(open('nd/manifest.json'))['morph']; print(m['normalisation'], ' '.join('--shape %s=nd/%s' % kv for kv in sorted(m['shapes'].items())))")
   expect_in "manifest names the distances" "$shapes" "distance --shape mdist_cat=nd/meta5d-cat-distance.vti"
   for key in "cat 0 0" "roblet 1 1"; do

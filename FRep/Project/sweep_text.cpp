@@ -42,7 +42,9 @@ bool steep(const std::vector<PathPiece>& pieces)
   return false;
 }
 
-std::string body(const std::string& name, const std::string& profile, const SweepPath& path)
+} // namespace
+
+std::string moved_point_text(const SweepPath& path)
 {
   const std::vector<PathPiece> pieces = path_pieces(path);
   const bool tangent = path.orientation == SweepPath::Orientation::Tangent;
@@ -50,8 +52,7 @@ std::string body(const std::string& name, const std::string& profile, const Swee
                     detail::path_position_text(pieces, "x[4]", { "mcx", "mcy", "mcz" });
   out += "  mvx = x[1] - mcx;\n  mvy = x[2] - mcy;\n  mvz = x[3] - mcz;\n";
   if (!tangent)
-    return out + "  mp[1] = mvx;\n  mp[2] = mvy;\n  mp[3] = mvz;\n  " + name + " = " + profile +
-           "(mp, a);\n";
+    return out + "  mp[1] = mvx;\n  mp[2] = mvy;\n  mp[3] = mvz;\n";
   out += detail::path_slope_text(pieces, { "mdx", "mdy", "mdz" });
   const bool y_up = steep(pieces);
   // z' = d / |d|; x' = up x z' / |..|; y' = z' x x'.
@@ -62,10 +63,12 @@ std::string body(const std::string& name, const std::string& profile, const Swee
   out += "  mk = sqrt(mxx*mxx + mxy*mxy + mxz*mxz);\n  mxx = mxx/mk;\n  mxy = mxy/mk;\n"
          "  mxz = mxz/mk;\n";
   out += "  myx = mzy*mxz - mzz*mxy;\n  myy = mzz*mxx - mzx*mxz;\n  myz = mzx*mxy - mzy*mxx;\n";
-  out += "  mp[1] = mvx*mxx + mvy*mxy + mvz*mxz;\n  mp[2] = mvx*myx + mvy*myy + mvz*myz;\n"
-         "  mp[3] = mvx*mzx + mvy*mzy + mvz*mzz;\n";
-  return out + "  " + name + " = " + profile + "(mp, a);\n";
+  return out + "  mp[1] = mvx*mxx + mvy*mxy + mvz*mxz;\n  mp[2] = mvx*myx + mvy*myy + mvz*myz;\n"
+               "  mp[3] = mvx*mzx + mvy*mzy + mvz*mzz;\n";
 }
+
+namespace
+{
 
 std::string check(const std::string& name, const std::string& profile, int a_dim,
   const SweepPath& path)
@@ -77,6 +80,13 @@ std::string check(const std::string& name, const std::string& profile, int a_dim
     return "the sweep cannot be named like its profile ('" + name + "')";
   if (a_dim < 1)
     return "the profile's a[] size must be at least 1";
+  return sweep_path_error(path);
+}
+
+} // namespace
+
+std::string sweep_path_error(const SweepPath& path)
+{
   const std::size_t need = path.closed ? 3 : 2;
   if (path.points.size() < need)
     return "a" + std::string(path.closed ? " closed" : "n open") + " path needs at least " +
@@ -93,8 +103,6 @@ std::string check(const std::string& name, const std::string& profile, int a_dim
   }
   return {};
 }
-
-} // namespace
 
 SweepText write_sweep(const std::string& name, const std::string& profile, int profile_a_dim,
   const SweepPath& path)
@@ -113,7 +121,7 @@ SweepText write_sweep(const std::string& name, const std::string& profile, int p
                 " orientation) as x4 goes 0 -> 1;\n-- projected along x4 (frepkit mesh --project "
                 "x4=0:1) it is the volume the profile sweeps. Written by frepkit sweep.\n" +
                 name + "(x[4], a[" + std::to_string(profile_a_dim) + "])\n{\n" +
-                body(name, profile, path) + "}\n";
+                moved_point_text(path) + "  " + name + " = " + profile + "(mp, a);\n}\n";
   return result;
 }
 

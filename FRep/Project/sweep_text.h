@@ -63,6 +63,15 @@ SweepText write_sweep(const std::string& name, const std::string& profile, int p
 SweepText write_path_family(const std::string& name, const std::string& source, int source_x_dim,
   int source_a_dim, const std::vector<int>& path_coordinates, const std::vector<PathPiece>& pieces);
 
+/// Why `path` cannot be swept along ("" when it can): fewer points than it needs, a point that is
+/// not finite, two consecutive points alike (no direction).
+std::string sweep_path_error(const SweepPath& path);
+
+/// The statements that set mp[1..3], the profile's point for x[1..3] at t = x[4] (the profile
+/// moved back by the path's point, and turned back by its frame with Orientation::Tangent):
+/// the body of write_sweep and of sweep_model's coordinates. `path` must pass sweep_path_error.
+std::string moved_point_text(const SweepPath& path);
+
 /// "polyline" / "catmull-rom", "fixed" / "tangent" (nullopt-like: false for another name).
 bool sweep_curve_from_name(const std::string& text, SweepPath::Curve& curve);
 bool sweep_orientation_from_name(const std::string& text, SweepPath::Orientation& orientation);

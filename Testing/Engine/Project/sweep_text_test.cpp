@@ -1,16 +1,19 @@
 // A profile moved along a path (Project/sweep_text.h): at the path's points the moved profile is
 // the profile placed there; a sphere along a segment, projected, is the capsule; a long profile
-// turned by the tangent lies along the path; bad paths are refused with the reason.
+// turned by the tangent lies along the path; bad paths are refused with the reason. The compiled
+// form (Project/sweep_model.h) gives the written text's values bit for bit.
 #include "Compiler/load_model.h"
 #include "Eval/point_evaluator.h"
 #include "Project/path_family.h"
 #include "Project/projection.h"
+#include "Project/sweep_model.h"
 #include "Project/sweep_text.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 namespace
@@ -109,6 +112,58 @@ TEST(SweepText, TangentOrientationLaysTheProfileAlongThePath)
   ASSERT_TRUE(up);
   EXPECT_GT(value(*up, { 0, 0, 1.4, 0.5 }), 0.0);
   EXPECT_LT(value(*up, { 0.4, 0, 1.0, 0.5 }), 0.0);
+}
+
+TEST(SweepModel, GivesTheWrittenSweepsValuesBitForBit)
+{
+  frep::LoadOptions options;
+  options.object = "cigar";
+  const frep::LoadedModel cigar =
+    frep::load_model(frep::ModelSource::from_text(kCigar, "cigar.hf"), options);
+  ASSERT_TRUE(cigar.ok()) << cigar.message();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-0.2, 1.2), t(0.0, 1.0);
+  for (const auto orientation : { SweepPath::Orientation::Fixed, SweepPath::Orientation::Tangent })
+    for (const auto curve : { SweepPath::Curve::Polyline, SweepPath::Curve::CatmullRom })
+    {
+      SweepPath path;
+      path.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.5 }, { 0, 1, 1 } };
+      path.curve = curve;
+      path.closed = curve == SweepPath::Curve::CatmullRom;
+      path.orientation = orientation;
+      const auto written = sweep_model(kCigar, "cigar", path);
+      const frep::LoadedModel compiled = frep::project::sweep_model({ cigar.model, {} }, path);
+      ASSERT_TRUE(written && compiled.ok()) << compiled.message();
+      EXPECT_EQ(compiled.model->x_dim(), 4);
+      frep::PointEvaluator a(written->tape()), b(compiled.model->tape());
+      int inside = 0;
+      for (int i = 0; i < 2000; ++i)
+      {
+        const std::vector<double> x = { u(random), u(random), u(random), t(random) };
+        const double v = a.value(x), w = b.value(x);
+        EXPECT_EQ(std::memcmp(&v, &w, sizeof v), 0) << v << " vs " << w << " at " << i;
+        inside += v >= 0;
+      }
+      EXPECT_GT(inside, 0); // the points reach the cigar somewhere
+    }
+}
+
+TEST(SweepModel, RefusesABadPathOrAProfileThatIsNot3D)
+{
+  const frep::LoadedModel four = frep::load_model(frep::ModelSource::from_text(
+    "four(x[4], a[1]) { four = 1 - x[1]^2 - x[2]^2 - x[3]^2 - x[4]^2; }\n", "four.hf"));
+  ASSERT_TRUE(four.ok());
+  SweepPath path;
+  path.points = { { 0, 0, 0 }, { 1, 0, 0 } };
+  const frep::LoadedModel bad = frep::project::sweep_model({ four.model, {} }, path);
+  EXPECT_FALSE(bad.ok());
+  EXPECT_NE(bad.message().find("3 free coordinates (four has 4)"), std::string::npos) << bad.message();
+  frep::Specialisation fix_x4;
+  fix_x4.fixed = { std::nullopt, std::nullopt, std::nullopt, 0.5 };
+  EXPECT_TRUE(frep::project::sweep_model({ four.model, fix_x4 }, path).ok());
+  path.points = { { 0, 0, 0 }, { 0, 0, 0 } };
+  const frep::LoadedModel same = frep::project::sweep_model({ four.model, fix_x4 }, path);
+  EXPECT_NE(same.message().find("are the same"), std::string::npos) << same.message();
 }
 
 TEST(SweepText, BadPathsAreRefusedWithTheReason)

@@ -11,7 +11,10 @@
 
 #include "Compiler/combine.h"
 #include "Compiler/load_model.h"
+#include "Eval/interval.h"
 #include "Project/sweep_text.h"
+
+#include <array>
 
 namespace frep::project
 {
@@ -20,5 +23,10 @@ namespace frep::project
 /// x[4] goes 0 -> 1: a model of x[4] named "compose(<profile>)". Errors come back as one
 /// diagnostic without a position: a path sweep_path_error refuses, a profile that is not 3-D.
 LoadedModel sweep_model(const Operand& profile, const SweepPath& path);
+
+/// A box that holds what a profile inside `profile_box` sweeps along `path` (which must pass
+/// sweep_path_error): the box moved over the path's exact extent (its cubics' extremes), or with
+/// Orientation::Tangent the ball about the profile's origin through the box's farthest corner.
+std::array<Interval, 3> sweep_bounds(const SweepPath& path, const std::array<Interval, 3>& profile_box);
 
 } // namespace frep::project

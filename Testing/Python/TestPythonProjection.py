@@ -8,6 +8,9 @@
   closed form (never above it; within the tolerance of it inside the band; beyond it the sign);
 - polygonised: the capsule's volume (vtkMassProperties) within 2 %;
 - a coordinate the model lacks: frepkit.update raises FRepError with the filter's message;
+- vtkFRepSweep: a ball moved along the same segment gives the same capsule (the contract at the
+  same points), its output's box the ball's swept along the path; a one-point path raises
+  FRepError;
 - vtkFRepSpaceTimeQuery: the moving sphere's section volume at 3 times (the ball's, 2 %), when
   the point (0, 0, 0) is inside (x4 in [0.25, 0.75]), as numpy arrays of its table's columns.
 Exits 1 on any failed check."""
@@ -22,7 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from python_checks import check, finish  # noqa: E402
 
 import frepkit  # noqa: E402
-from frepkit import vtkFRepPolygonizer, vtkFRepProjection, vtkFRepSpaceTimeQuery, vtkHyperFunSource  # noqa: E402
+from frepkit import vtkFRepPolygonizer, vtkFRepProjection, vtkFRepSpaceTimeQuery, vtkFRepSweep, vtkHyperFunSource  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkMassProperties, vtkTriangleFilter  # noqa: E402
 
@@ -69,6 +72,33 @@ try:
     check(False, "a coordinate the model lacks raises FRepError")
 except frepkit.FRepError as e:
     check("cannot project along coordinate 6" in str(e), "FRepError says why: %s" % e)
+
+# A profile along a path: the ball (x4 fixed out of the model) along (-1, 0, 0) -> (1, 0, 0).
+ball = vtkHyperFunSource()
+ball.SetModelText("ball(x[3], a[1]) { ball = 0.25 - (x[1]^2 + x[2]^2 + x[3]^2); }")
+for axis in range(3):
+    ball.SetCoordinateRange(axis, -0.5, 0.5)
+sweep = vtkFRepSweep()
+sweep.SetInputConnection(ball.GetOutputPort())
+sweep.AddPathPoint(-1, 0, 0)
+sweep.AddPathPoint(1, 0, 0)
+frepkit.update(sweep)
+capsule_object = sweep.GetOutput()
+box = [0.0, 0.0]
+capsule_object.GetCoordinateRange(0, box)
+check(box == [-1.5, 1.5], "the sweep's x range is the ball's moved along the path: %s" % box)
+swept_values = frepkit.evaluate(capsule_object, points)
+above = numpy.count_nonzero(swept_values > capsule + 1e-12)
+inner = (swept_values >= -band) & (swept_values < band)
+off = numpy.count_nonzero(inner & (swept_values < capsule - tol))
+check(above == 0 and off == 0, "vtkFRepSweep: the capsule (%d above, %d off)" % (above, off))
+sweep.RemoveAllPathPoints()
+sweep.AddPathPoint(0, 0, 0)
+try:
+    frepkit.update(sweep)
+    check(False, "a one-point path raises FRepError")
+except frepkit.FRepError as e:
+    check("at least 2 points" in str(e), "FRepError says why: %s" % e)
 
 # The questions of space-time, in the object's box (the sphere's whole way).
 source.SetCoordinateRange(0, -1.6, 1.6)

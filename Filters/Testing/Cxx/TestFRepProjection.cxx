@@ -122,18 +122,7 @@ int TestFRepProjection(int, char*[])
 
   // --- bad requests: one error each, an empty output
   const auto refused = [&](const char* expected)
-  {
-    events->Clear();
-    projection->Update();
-    const bool empty = !projection->GetOutput()->HasModel();
-    const bool said = events->ErrorText.find(expected) != std::string::npos;
-    if (!empty || events->Errors != 1 || !said)
-    {
-      std::cerr << "expected one error with '" << expected << "', got " << events->Errors
-                << ": " << events->ErrorText << std::endl;
-    }
-    return empty && events->Errors == 1 && said;
-  };
+  { return frepkit_test::RefusedWithOneError(projection.GetPointer(), events.GetPointer(), expected); };
   projection->SetProjectedCoordinate(7);
   FREPKIT_CHECK(failures, refused("cannot project along coordinate 7: the model has 5"));
   projection->SetProjectedCoordinate(-1);

@@ -330,6 +330,21 @@ projection.ProjectedRange = [0.0, 0.5]
 sweep.UpdatePipeline()
 t.near(bounds(sweep)[1], 0.5, 0.1, "half the way: max x 0.5")
 
+# --- FRep Sweep: a ball along a segment, then along an L ------------------------------------------
+ball = HyperFunSource(ModelText="b(x[3], a[1]) { b = 0.25 - (x[1]^2 + x[2]^2 + x[3]^2); }")
+swept = FRepSweep(Input=ball)
+t.check(list(swept.PathPoints) == [-1.0, 0.0, 0.0, 1.0, 0.0, 0.0] and swept.Curve == "Polyline"
+        and swept.Orientation == "Fixed", "Sweep defaults: (-1,0,0) -> (1,0,0), polyline, fixed")
+smesh = FRepPolygonizer(Input=swept, SampleDimensions=[40, 40, 20])  # the sweep's own intervals
+smesh.UpdatePipeline()
+b = bounds(smesh)
+t.near(b[0], -1.5, 0.1, "swept ball min x (the capsule's end)")
+t.near(b[1], 1.5, 0.1, "swept ball max x")
+t.near(b[3], 0.5, 0.1, "swept ball max y (its radius)")
+swept.PathPoints = [-1, 0, 0, 1, 0, 0, 1, 1, 0]
+smesh.UpdatePipeline()
+t.near(bounds(smesh)[3], 1.5, 0.1, "along an L: max y 1.5")
+
 # --- FRep Space-Time Query: the sweeping sphere's volume over time, and first contact -----------
 # The box the questions are asked in is the object's intervals: the whole way of both spheres
 # (the source's own bounds are those of one position).

@@ -59,6 +59,24 @@ public:
   std::string WarningText;
 };
 
+/// Updates `filter` (an FRep object filter observed by `events`) and tells whether the request
+/// was refused as the filters refuse one: exactly one error containing `expected` and an empty
+/// output; says what happened otherwise.
+template <class Filter>
+bool RefusedWithOneError(Filter* filter, EventCounter* events, const char* expected)
+{
+  events->Clear();
+  filter->Update();
+  const bool empty = !filter->GetOutput()->HasModel();
+  const bool said = events->ErrorText.find(expected) != std::string::npos;
+  if (!empty || events->Errors != 1 || !said)
+  {
+    std::cerr << "expected one error with '" << expected << "', got " << events->Errors << ": "
+              << events->ErrorText << std::endl;
+  }
+  return empty && events->Errors == 1 && said;
+}
+
 /// Counts the executions (RequestData) of an algorithm: observe its EndEvent.
 class ExecutionCounter : public vtkCommand
 {

@@ -166,6 +166,49 @@ TEST(SweepModel, RefusesABadPathOrAProfileThatIsNot3D)
   EXPECT_NE(same.message().find("are the same"), std::string::npos) << same.message();
 }
 
+TEST(SweepModel, BoundsHoldThePathsExtentAndTheProfile)
+{
+  SweepPath line;
+  line.points = { { 0, 0, 0 }, { 2, 0, 0 } };
+  const std::array<frep::Interval, 3> cube{ frep::Interval{ -0.5, 0.5 }, frep::Interval{ -0.5, 0.5 },
+    frep::Interval{ -0.5, 0.5 } };
+  auto b = frep::project::sweep_bounds(line, cube);
+  EXPECT_EQ(b[0].lo, -0.5);
+  EXPECT_EQ(b[0].hi, 2.5);
+  EXPECT_EQ(b[1].hi, 0.5);
+  line.orientation = SweepPath::Orientation::Tangent; // turned: the corner's distance, sqrt(0.75)
+  b = frep::project::sweep_bounds(line, cube);
+  EXPECT_NEAR(b[1].hi, std::sqrt(0.75), 1e-15);
+  EXPECT_NEAR(b[0].hi, 2 + std::sqrt(0.75), 1e-15);
+  // A closed spline overshoots its points: the bounds are its cubics' extremes, sampled finely.
+  SweepPath loop;
+  loop.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.5 }, { 0, 1, 1 } };
+  loop.curve = SweepPath::Curve::CatmullRom;
+  loop.closed = true;
+  const std::array<frep::Interval, 3> point{ frep::Interval{ 0, 0 }, frep::Interval{ 0, 0 },
+    frep::Interval{ 0, 0 } };
+  b = frep::project::sweep_bounds(loop, point);
+  std::vector<std::vector<double>> points;
+  for (const auto& p : loop.points)
+    points.emplace_back(p.begin(), p.end());
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& piece : frep::project::catmull_rom_pieces(points, true))
+      for (int i = 0; i <= 1000; ++i)
+      {
+        const double v = frep::project::piece_value(piece[a], i / 1000.0);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    EXPECT_LE(b[a].lo, lo + 1e-12);
+    EXPECT_GE(b[a].hi, hi - 1e-12);
+      EXPECT_NEAR(b[a].lo, lo, 1e-5);
+    EXPECT_NEAR(b[a].hi, hi, 1e-5);
+  }
+  EXPECT_LT(b[0].lo, 0.0); // the spline overshoots x = 0
+}
+
 TEST(SweepText, BadPathsAreRefusedWithTheReason)
 {
   const auto refused = [](const std::string& name, const std::string& profile, SweepPath path)

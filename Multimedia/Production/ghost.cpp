@@ -1,7 +1,7 @@
 // produce, phase 6b: the animation's ghost (ghost.png), the union of every shape the animation
 // shows: the sectioned model driven along the path through its dynamic coordinates
-// (project::path_family) and projected along the path's parameter, meshed and drawn with the
-// cells' camera. Exact within the projection's tolerance, between frames too (a union of the
+// (project::path_family) and projected along the path's parameter, meshed and drawn from the
+// frames' view angles, fitted to its own box. Exact within the projection's tolerance, between frames too (a union of the
 // frames' meshes would miss what a shape passes through between two of them).
 #include "Production/detail/phases.h"
 
@@ -9,6 +9,8 @@
 #include "Project/projection.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 
 namespace frep::mapping::production
@@ -69,6 +71,22 @@ std::shared_ptr<const Model> ghost_model(const Job& job, const GhostSettings& se
   return ghost.model;
 }
 
+
+// The camera of the frames' view angles fitted to the ghost's own world box: the union is larger
+// than any one frame's shape, so the frames' camera (fitted to their view) would cut it.
+imaging::Camera ghost_camera(const mesh::Surface& surface, const RenderSettings& render)
+{
+  std::array<double, 3> lo{ INFINITY, INFINITY, INFINITY }, hi{ -INFINITY, -INFINITY, -INFINITY };
+  for (std::size_t p = 0; p < surface.point_count(); ++p)
+    for (std::size_t a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], surface.points[3 * p + a]);
+      hi[a] = std::max(hi[a], surface.points[3 * p + a]);
+    }
+  return box_camera(lo, hi, static_cast<double>(render.width) / render.height, render.azimuth,
+    render.elevation);
+}
+
 } // namespace
 
 void render_ghost(const Job& job, Workers& workers, Record& record)
@@ -78,9 +96,7 @@ void render_ghost(const Job& job, Workers& workers, Record& record)
   const GhostSettings& settings = *job.spec().animation.ghost;
   const RenderSettings& render = job.spec().render;
   const std::shared_ptr<const Model> ghost = ghost_model(job, settings);
-  const imaging::Camera camera =
-    plan_camera(plan, render, static_cast<double>(render.width) / render.height, job.framing);
-  DrawOptions options;
+  SectionOptions options;
   options.threads = workers.count();
   options.cancel = [&job] { return job.stopped(); };
   options.samples.fill(settings.resolution);
@@ -89,28 +105,34 @@ void render_ghost(const Job& job, Workers& workers, Record& record)
   Sample sample = plan.frames.front();
   sample.colour = render.colour;
   sample.label = "ghost";
-  const SamplePicture p = draw_sample(*ghost, job.inputs.parameters, plan, sample,
-    camera, render.width, render.height, render, RenderSettings::Method::Mesh, options,
-    job.framing);
-  if (p.cancelled)
-    throw Stopped();
+  const Section section = make_section(*ghost, job.inputs.parameters, plan, sample, options);
   job.throw_if_stopped();
-  if (!p.error.empty())
-    throw ProductionError("the ghost: " + p.error);
-  write_png_file(job.options.directory / "ghost.png", p.image);
+  if (section.cancelled)
+    throw Stopped();
+  if (!section.ok())
+    throw ProductionError("the ghost: " + section.error);
+  const double mesh_seconds = seconds_since(t0);
+  const std::size_t triangles = section.surface.cell_count();
+  // An empty ghost is the background (render_sample draws nothing else then).
+  const imaging::Camera camera = triangles == 0
+    ? plan_camera(plan, render, static_cast<double>(render.width) / render.height, job.framing)
+    : ghost_camera(section.surface, render);
+  const imaging::Image image = render_sample(plan, section, sample, camera, render.width,
+    render.height, render, workers.count(), nullptr, job.framing);
+  write_png_file(job.options.directory / "ghost.png", image);
   workers.advance();
   record.files.push_back({ { "file", "ghost.png" },
     { "kind", "ghost" },
-    { "width", p.image.width },
-    { "height", p.image.height },
+    { "width", image.width },
+    { "height", image.height },
     { "coordinates", plan.dynamic_coordinates },
     { "resolution", settings.resolution },
     { "tolerance", settings.tolerance },
-    { "triangles", p.triangles } });
+    { "triangles", triangles } });
   record.stages.push_back({ "ghost",
     seconds_since(t0),
-    std::to_string(p.triangles) + " triangles at " + std::to_string(settings.resolution) +
-      "^3 (mesh " + std::to_string(p.mesh_seconds).substr(0, 5) + " s)" });
+    std::to_string(triangles) + " triangles at " + std::to_string(settings.resolution) +
+      "^3 (mesh " + std::to_string(mesh_seconds).substr(0, 5) + " s)" });
 }
 
 } // namespace frep::mapping::production

@@ -149,6 +149,12 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
       "projected along its path; default: the mapping's 32), 0 for none")
     ->check(CLI::Range(0, 1024) & !CLI::Range(1, 1));
   cmd
+    ->add_option("--topology",
+      o.topology,
+      "resolution of the map of the topology (every cell's and frame's pieces and genus, where "
+      "they change; default: the mapping's 48), 0 for none")
+    ->check(CLI::Range(0, 1024) & !CLI::Range(1, 1));
+  cmd
     ->add_option("--method",
       o.method,
       "draw cells and frames by 'mesh' (quick drafts) or 'raycast' (default: the mapping's: "
@@ -202,6 +208,7 @@ int run_demo(const DemoOptions& options)
   map.frames = options.frames;
   map.resolution = options.resolution;
   map.ghost = options.ghost;
+  map.topology = options.topology;
   map.method = options.method;
   map.force = options.force;
   map.threads = options.threads;

@@ -37,7 +37,8 @@ std::string read_file(const std::string& path, const char* what)
   return text.str();
 }
 
-// The mapping file, checked, with --resolution, --ghost, --frames and --method applied.
+// The mapping file, checked, with --resolution, --ghost, --topology, --frames and --method
+// applied.
 mapping::Spec load_spec(const MapOptions& options)
 {
   const mapping::LoadResult loaded =
@@ -58,6 +59,21 @@ mapping::Spec load_spec(const MapOptions& options)
     if (spec.animation.ghost) // a quick run is quick for the ghost too
     {
       spec.animation.ghost->resolution = std::min(spec.animation.ghost->resolution, *options.resolution);
+    }
+    if (spec.topology) // and for the topology map
+    {
+      spec.topology->resolution = std::min(spec.topology->resolution, *options.resolution);
+    }
+  }
+  if (options.topology)
+  {
+    if (*options.topology == 0)
+      spec.topology.reset();
+    else
+    {
+      if (!spec.topology)
+        spec.topology = mapping::TopologySettings{};
+      spec.topology->resolution = *options.topology;
     }
   }
   if (options.ghost)
@@ -188,13 +204,20 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
     ->add_option("--resolution",
       o.resolution,
       "grid samples along the longest world axis (default: the mapping's world.resolution; the "
-      "ghost's animation.ghost.resolution is lowered to it)")
+      "ghost's animation.ghost.resolution and topology.resolution are lowered to it)")
     ->check(CLI::Range(2, 4096));
   cmd
     ->add_option("--ghost",
       o.ghost,
       "draw the animation's ghost (ghost.png: the union of every shape the path passes) at this "
       "resolution, 0 for none (default: the mapping's animation.ghost)")
+    ->check(CLI::Range(0, 8192) & !CLI::Range(1, 1));
+  cmd
+    ->add_option("--topology",
+      o.topology,
+      "map the topology (pieces and genus of every cell and frame, where they change: "
+      "spreadsheet-topology.png, topology.png, the manifest's topology) with sections meshed at "
+      "this resolution, 0 for none (default: the mapping's topology)")
     ->check(CLI::Range(0, 8192) & !CLI::Range(1, 1));
   cmd->add_option("--frames", o.frames, "number of frames (default: duration x fps)")
     ->check(CLI::Range(1, 1000000));
@@ -206,8 +229,8 @@ CLI::App* add_map_command(CLI::App& app, MapOptions& o)
   cmd
     ->add_option("--only",
       o.only,
-      "produce only these: spreadsheet, path, frames, audio, movie, shape, ghost (default: all the "
-      "mapping defines)")
+      "produce only these: spreadsheet, path, frames, audio, movie, shape, ghost, topology "
+      "(default: all the mapping defines)")
     ->delimiter(',')
     ->check(CLI::IsMember(mapping::product_names()));
   cmd->add_option("--name",

@@ -35,9 +35,12 @@ struct MapOptions
   /// animation.ghost's resolution (the ghost added with its default tolerance if the mapping has
   /// none); 0: no ghost. Applied after `resolution`.
   std::optional<int> ghost;
+  /// topology.resolution (the map of the topology added with its defaults if the mapping has
+  /// none); 0: no topology map. Applied after `resolution`.
+  std::optional<int> topology;
   /// Overrides render.method for cells and frames alike: "mesh" (quick drafts) or "raycast".
   std::optional<std::string> method;
-  std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape, ghost
+  std::vector<std::string> only; ///< spreadsheet, path, frames, audio, movie, shape, ghost, topology
   std::string name;              ///< output stem; default: the mapping file's stem
   bool force = false;            ///< re-render frames that exist
   /// When set, the manifest's text is given here instead of written to manifest.json: frepkit

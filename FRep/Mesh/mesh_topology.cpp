@@ -33,7 +33,35 @@ struct Components
   void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
+// The pieces of a contour: its segments joined by shared points.
+std::size_t contour_loops(const Surface& contour)
+{
+  Components components(contour.point_count());
+  std::vector<unsigned char> used(contour.point_count(), 0);
+  for (std::size_t c = 0; c + 1 < contour.cells.size(); c += 2)
+  {
+    used[contour.cells[c]] = used[contour.cells[c + 1]] = 1;
+    components.join(contour.cells[c], contour.cells[c + 1]);
+  }
+  std::size_t pieces = 0;
+  for (std::uint32_t p = 0; p < used.size(); ++p)
+  {
+    pieces += used[p] && components.find(p) == p ? 1 : 0;
+  }
+  return pieces;
+}
+
 } // namespace
+
+ShapeTopology shape_topology(const Surface& surface)
+{
+  if (surface.dimension != 3)
+  {
+    return { contour_loops(surface), 0 };
+  }
+  const MeshTopology t = analyse_topology(surface);
+  return { t.components, t.genus() };
+}
 
 MeshTopology analyse_topology(const Surface& surface)
 {

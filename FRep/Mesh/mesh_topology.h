@@ -23,6 +23,10 @@ struct MeshTopology
   double signed_volume = 0;        ///< > 0 for a closed mesh oriented outward
   double area = 0;
 
+  /// The genus summed over the pieces, for a closed mesh: each closed piece has Euler
+  /// characteristic 2 - 2g.
+  long long genus() const { return static_cast<long long>(components) - euler_characteristic / 2; }
+
   /// Closed, every edge in exactly two triangles run in opposite directions.
   bool watertight_and_oriented() const
   {
@@ -33,5 +37,21 @@ struct MeshTopology
 
 /// Analyses surface.cells as triangles (surface.dimension must be 3).
 MeshTopology analyse_topology(const Surface& surface);
+
+/// What a closed mesh or contour says of the shape it bounds, the figures a map of the topology
+/// compares (Project/space_time.h's topology_events, the mapping's topology map).
+struct ShapeTopology
+{
+  std::size_t components = 0; ///< connected pieces: closed surfaces (3-D), contour loops (2-D)
+  /// 3-D: the genus summed over the pieces (MeshTopology::genus); 0 in 2-D, where a hole is a
+  /// loop of its own.
+  long long genus = 0;
+
+  friend bool operator==(const ShapeTopology&, const ShapeTopology&) = default;
+};
+
+/// The pieces and genus of a surface (dimension 3: triangles) or contour (2: segments). The
+/// figures are exact for the closed, manifold meshes the mesher makes.
+ShapeTopology shape_topology(const Surface& surface);
 
 } // namespace frep::mesh

@@ -40,8 +40,8 @@ SectionMeasures section_measures(const Model& model, const CoordinateRange& time
       return result;
     }
     m.measure = shape.measure;
-    m.components = shape.components;
-    m.genus = shape.genus;
+    m.components = shape.topology.components;
+    m.genus = shape.topology.genus;
     result.table.push_back(m);
   }
   return result;

@@ -3,37 +3,11 @@
 #include "Mesh/mesh_topology.h"
 #include "Mesh/surface.h"
 
-#include <numeric>
 
 namespace frep::project::detail
 {
 namespace
 {
-
-// The pieces of a contour: its segments joined by shared points.
-std::size_t contour_loops(const mesh::Surface& contour)
-{
-  std::vector<std::uint32_t> parent(contour.point_count());
-  std::iota(parent.begin(), parent.end(), 0u);
-  const auto root = [&](std::uint32_t i)
-  {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::vector<bool> used(parent.size(), false);
-  for (std::size_t c = 0; c + 1 < contour.cells.size(); c += 2)
-  {
-    const std::uint32_t a = root(contour.cells[c]), b = root(contour.cells[c + 1]);
-    used[contour.cells[c]] = used[contour.cells[c + 1]] = true;
-    if (a != b)
-      parent[a] = b;
-  }
-  std::size_t pieces = 0;
-  for (std::uint32_t i = 0; i < parent.size(); ++i)
-    pieces += used[i] && root(i) == i ? 1 : 0;
-  return pieces;
-}
 
 // The area inside a contour whose segments have the inside on their left (shoelace).
 double contour_area(const mesh::Surface& contour)
@@ -85,14 +59,12 @@ SectionShape section_shape(const Model& model, int time_coordinate, double time,
   if (!solid)
   {
     shape.measure = contour_area(r.surface);
-    shape.components = contour_loops(r.surface);
+    shape.topology = mesh::shape_topology(r.surface);
     return shape;
   }
   const mesh::MeshTopology topology = mesh::analyse_topology(r.surface);
   shape.measure = topology.signed_volume;
-  shape.components = topology.components;
-  // Each closed piece has Euler characteristic 2 - 2 g: the genus summed over the pieces.
-  shape.genus = static_cast<long long>(topology.components) - topology.euler_characteristic / 2;
+  shape.topology = { topology.components, topology.genus() };
   return shape;
 }
 

@@ -17,9 +17,11 @@
 
 #include "Compiler/model.h"
 #include "Eval/interval.h"
+#include "Mesh/mesh_topology.h"
 #include "Project/projection.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -121,5 +123,17 @@ struct TopologyTrack
 TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
   const std::vector<Interval>& space, int steps, int samples, double resolution,
   const SpaceTimeOptions& options = {});
+
+/// The topology of a family of shapes at a parameter (a mesh of the shape there, analysed).
+using TopologyAt = std::function<mesh::ShapeTopology(double)>;
+
+/// The changes of a family's topology from parameter a to b > a (whose shapes `at_a`, `at_b`
+/// are known), each located by bisection to `resolution`, nearest to a first: a shape met in
+/// between that is neither end's is a change of its own. What topology_events does between two
+/// of its samples, and the mapping's topology map between two cells or two frames. A change and
+/// its undoing between two of the probes is not seen; an error of shape_at's is its own to keep
+/// (shape_at is called at most 2 + log2((b - a) / resolution) times per change).
+std::vector<TopologyEvent> locate_topology_changes(double a, const mesh::ShapeTopology& at_a,
+  double b, const mesh::ShapeTopology& at_b, double resolution, const TopologyAt& shape_at);
 
 } // namespace frep::project

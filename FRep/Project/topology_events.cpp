@@ -10,17 +10,12 @@ namespace frep::project
 namespace
 {
 
-struct Shape
-{
-  std::size_t components = 0;
-  long long genus = 0;
-  bool operator==(const Shape&) const = default;
-};
+using Shape = mesh::ShapeTopology;
 
 // Bisection of [a, b], whose ends have different shapes, down to `resolution`: the change
 // nearest to a (a shape in between that is neither end's is the new b).
 TopologyEvent locate(double a, Shape at_a, double b, Shape at_b, double resolution,
-  const std::function<Shape(double)>& shape_at)
+  const TopologyAt& shape_at)
 {
   while (b - a > resolution)
   {
@@ -38,6 +33,23 @@ TopologyEvent locate(double a, Shape at_a, double b, Shape at_b, double resoluti
 }
 
 } // namespace
+
+std::vector<TopologyEvent> locate_topology_changes(double a, const mesh::ShapeTopology& at_a,
+  double b, const mesh::ShapeTopology& at_b, double resolution, const TopologyAt& shape_at)
+{
+  std::vector<TopologyEvent> events;
+  double from = a;
+  Shape from_shape = at_a;
+  // Each event ends where the next search begins, at a shape known there; the last ends at b.
+  while (!(from_shape == at_b) && from < b)
+  {
+    const TopologyEvent e = locate(from, from_shape, b, at_b, resolution, shape_at);
+    events.push_back(e);
+    from = e.after;
+    from_shape = Shape{ e.components_after, e.genus_after };
+  }
+  return events;
+}
 
 TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
   const std::vector<Interval>& space, int steps, int samples, double resolution,
@@ -59,7 +71,7 @@ TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
       detail::section_shape(model, time.coordinate, t, grid, options.parameters);
     if (!s.error.empty() && error.empty())
       error = s.error;
-    return Shape{ s.components, s.genus };
+    return s.topology;
   };
   double previous_t = time.lo;
   Shape previous = shape_at(previous_t);
@@ -69,16 +81,9 @@ TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
     const double t = time.lo + (time.hi - time.lo) * (i / double(steps - 1));
     const Shape now = shape_at(t);
     track.samples.push_back({ t, now.components, now.genus });
-    // Several changes between two samples: located one after the other, nearest first.
-    double from = previous_t;
-    Shape from_shape = previous;
-    while (!(now == from_shape) && error.empty())
-    {
-      const TopologyEvent e = locate(from, from_shape, t, now, resolution, shape_at);
+    for (const TopologyEvent& e :
+      locate_topology_changes(previous_t, previous, t, now, resolution, shape_at))
       track.events.push_back(e);
-      from = e.after;
-      from_shape = Shape{ e.components_after, e.genus_after };
-    }
     previous_t = t;
     previous = now;
   }

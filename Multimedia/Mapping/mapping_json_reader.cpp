@@ -1025,6 +1025,28 @@ void read_animation(Reader& r, const Json& doc, AnimationSettings& animation)
   }
 }
 
+// "topology": resolution, bisections.
+void read_topology(Reader& r, const Json& doc, std::optional<TopologySettings>& topology)
+{
+  const auto t = doc.find("topology");
+  if (t == doc.end() || !r.object(*t, "topology", { "resolution", "bisections" }))
+  {
+    return;
+  }
+  TopologySettings settings;
+  optional_key(*t,
+    "resolution",
+    "topology",
+    settings.resolution,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 2, max_resolution); });
+  optional_key(*t,
+    "bisections",
+    "topology",
+    settings.bisections,
+    [&](const Json& v, const std::string& p) { return r.integer(v, p, 0, 20); });
+  topology = settings;
+}
+
 // "spreadsheet": cell_size, spacing, labels.
 void read_spreadsheet(Reader& r, const Json& doc, SpreadsheetSettings& spreadsheet)
 {
@@ -1205,7 +1227,8 @@ LoadResult load_mapping(const std::string& json_text)
           "animation",
           "spreadsheet",
           "render",
-          "audio" }))
+          "audio",
+          "topology" }))
   {
     Spec& spec = result.spec;
     read_header(r, *doc, spec);
@@ -1215,6 +1238,7 @@ LoadResult load_mapping(const std::string& json_text)
     read_spreadsheet(r, *doc, spec.spreadsheet);
     read_render(r, *doc, spec.render);
     read_audio(r, *doc, spec.audio);
+    read_topology(r, *doc, spec.topology);
   }
   result.errors = std::move(r.errors);
   return result;

@@ -217,6 +217,10 @@ std::string save_mapping(const Spec& spec)
     doc["render"]["view_box"] = *rs.view_box;
   }
   doc["audio"] = Json{ { "sample_rate", spec.audio.sample_rate } };
+  if (const auto& t = spec.topology)
+  {
+    doc["topology"] = Json{ { "resolution", t->resolution }, { "bisections", t->bisections } };
+  }
   std::string text;
   write(doc, 0, text);
   return text + "\n";

@@ -249,6 +249,19 @@ struct AudioSettings
   friend bool operator==(const AudioSettings&, const AudioSettings&) = default;
 };
 
+/// The map of the topology (JSON "topology"): the pieces and genus of every spreadsheet cell's
+/// and animation frame's section, meshed at `resolution`, and where they change between two
+/// neighbouring cells or two consecutive frames, located by `bisections` halvings of the step
+/// (Project/space_time.h's locate_topology_changes); in the manifest, over the spreadsheet
+/// (spreadsheet-topology.png) and along the animation (topology.png).
+struct TopologySettings
+{
+  int resolution = 64; ///< samples per axis of each section's mesh
+  int bisections = 4;  ///< a change located to 2^-bisections of a step (0 to 20)
+
+  friend bool operator==(const TopologySettings&, const TopologySettings&) = default;
+};
+
 struct Spec
 {
   int version = 1;
@@ -260,6 +273,7 @@ struct Spec
   SpreadsheetSettings spreadsheet;
   RenderSettings render;
   AudioSettings audio;
+  std::optional<TopologySettings> topology; ///< unset: no topology map (a mesh per section)
 
   friend bool operator==(const Spec&, const Spec&) = default;
 };

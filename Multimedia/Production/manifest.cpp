@@ -21,6 +21,10 @@ std::string manifest_text(const Job& job, const Record& record)
     manifest["projected"] = projected; // the sections are the union over these ranges
   }
   manifest["files"] = record.files;
+  if (!record.topology.is_null())
+  {
+    manifest["topology"] = record.topology;
+  }
   nlohmann::json timing = nlohmann::json::object();
   for (const auto& s : record.stages)
   {

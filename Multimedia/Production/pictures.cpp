@@ -58,6 +58,8 @@ void render_spreadsheet(const Job& job, Workers& workers, Record& record)
   const imaging::Image sheet = compose_spreadsheet(plan, pictures, spec, workers.kit(0), &rects);
   write_png_file(job.options.directory / "spreadsheet.png", sheet);
   record.files.push_back(spreadsheet_json(job, sheet, rects));
+  record.sheet = sheet;
+  record.sheet_rects = rects;
   record.stages.push_back({ "spreadsheet",
     seconds_since(t0),
     std::to_string(plan.cells.size()) + " cells, " + std::to_string(sheet.width) + "x" +

@@ -49,6 +49,10 @@ void make_products(Job& job, ProductionReport& report)
   {
     render_ghost(job, workers, record);
   }
+  if (products.topology)
+  {
+    map_topology(job, workers, record);
+  }
   const fs::path wav = out / (job.options.stem + ".wav");
   // The sound and the movie are put in place by the Media library: none is started after a stop.
   if (products.audio)
@@ -80,7 +84,7 @@ void make_products(Job& job, ProductionReport& report)
 const std::vector<std::string>& product_names()
 {
   static const std::vector<std::string> names{ "spreadsheet", "path", "frames", "audio", "movie",
-    "shape", "ghost" };
+    "shape", "ghost", "topology" };
   return names;
 }
 

@@ -49,8 +49,10 @@ Products choose_products(const Job& job)
     const auto& known = product_names();
     if (std::find(known.begin(), known.end(), name) == known.end())
     {
-      throw ProductionError("no product is called '" + name +
-                            "' (spreadsheet, path, frames, audio, movie, shape, ghost)");
+      std::string names;
+      for (const std::string& k : known)
+        names += (names.empty() ? "" : ", ") + k;
+      throw ProductionError("no product is called '" + name + "' (" + names + ")");
     }
   }
   auto wanted = [&](const char* what)
@@ -65,11 +67,13 @@ Products choose_products(const Job& job)
   p.shape = wanted("shape") && plan.cells.empty() && plan.frames.empty();
   p.ghost = wanted("ghost") && job.spec().animation.ghost && !plan.frames.empty() &&
             !plan.dynamic_coordinates.empty();
-  if (!p.spreadsheet && !p.path && !p.frames && !p.audio && !p.shape && !p.ghost)
+  p.topology = wanted("topology") && job.spec().topology &&
+               (!plan.cells.empty() || !plan.frames.empty());
+  if (!p.spreadsheet && !p.path && !p.frames && !p.audio && !p.shape && !p.ghost && !p.topology)
   {
     throw ProductionError("the mapping has nothing of --only to produce (spreadsheet needs a "
                           "spreadsheet coordinate; path, frames, audio and movie a dynamic one; "
-                          "shape neither)");
+                          "shape neither; ghost animation.ghost and topology the key topology)");
   }
   return p;
 }

@@ -108,6 +108,15 @@ expect_in "the ghost at --ghost's resolution" "$(json ghost/manifest.json "[f['r
 run "--ghost 1" 1 "$frepkit" map ball.hf ball.json -O ghost1 --ghost 1
 expect_in "--ghost 1 refused" "$err" "--ghost"
 
+# --topology adds the map of the topology (the growing ball: one piece of genus 0 in every cell
+# and frame, no change) at its resolution; with the spreadsheet, its overlay too.
+run "--topology 12 --only spreadsheet,topology" 0 "$frepkit" map ball.hf ball.json -O topo --topology 12 --only spreadsheet,topology
+if [ -s topo/spreadsheet-topology.png ] && [ -s topo/topology.png ] && [ ! -e topo/frames ]; then pass "--only topology writes the overlay and the chart"; else fail "--only topology: $(ls -R topo)"; fi
+expect_in "the topology map in the manifest" "$(json topo/manifest.json "(d['topology']['resolution'], sorted(set(c['pieces'] for c in d['topology']['spreadsheet']['cells'])), sorted(set(d['topology']['frames']['pieces'])), len(d['topology']['frames']['changes']))")" "(12, [1], [1], 0)"
+expect_in "the topology stage is reported" "$err" "topology"
+run "--topology 1" 1 "$frepkit" map ball.hf ball.json -O topo1 --topology 1
+expect_in "--topology 1 refused" "$err" "--topology"
+
 # Bad mapping files: a clear error naming the place, exit code 1, nothing written.
 bad() { # NAME JSON EXPECTED-TEXT
   printf '%s\n' "$2" >bad.json

@@ -2,7 +2,8 @@
 # The main job end to end at the demo's own settings (ray-cast cells, meshed floor-scene frames at 128^3),
 # with 48 frames instead of 240 to keep the suite short: every output exists; the spreadsheet
 # has 25 non-empty cells and matches its baseline picture; the movie has the announced frame
-# count and an audio stream of the same duration; the ghost is listed at the resolution asked; the key shapes' STL files are closed
+# count and an audio stream of the same duration; the ghost is listed at the resolution asked;
+# the topology map covers every cell and frame; the key shapes' STL files are closed
 # meshes; the manifest lists everything and names the model drawn (meta5d.hf in the output folder,
 # written from the key files by the metamorphosis component, keys aligned by size), whose corners
 # are the key files' objects exactly. Without VTK, --normalise distance is refused (its files are .vti).
@@ -24,9 +25,9 @@ cd "$work" || exit 1
 field() { echo "$2" | awk -v k="$1" '{ for (i = 1; i < NF; i++) if ($i == k) print $(i + 1) }'; }
 near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= t * m) }'; }
 
-run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48 --ghost 24
+run "demo runs" 0 "$frepkit" demo homotopic -O demo --frames 48 --ghost 24 --topology 32
 echo "$err"
-for f in meta5d.hf spreadsheet.png path.png ghost.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
+for f in meta5d.hf spreadsheet.png spreadsheet-topology.png topology.png path.png ghost.png homotopic.mp4 homotopic.wav manifest.json cat.stl robot.stl nihon.stl roblet.stl frames/frame_00047.png; do
   if [ -s "demo/$f" ]; then pass "demo/$f written"; else fail "demo/$f missing"; fi
 done
 
@@ -67,7 +68,10 @@ for shape in cat robot nihon roblet; do
 done
 
 count=$(/usr/bin/python3 -c "import json; m = json.load(open('demo/manifest.json')); print(len(m['files']))")
-expect_in "manifest lists 5 pictures/sounds/movies + 4 meshes" "files $count" "files 10"
+expect_in "manifest lists 7 pictures/sounds/movies + 4 meshes" "files $count" "files 12"
+# The map of the topology at the resolution asked: every cell, every frame, the changes located.
+line=$(/usr/bin/python3 -c "import json; t = json.load(open('demo/manifest.json'))['topology']; s, f = t['spreadsheet'], t['frames']; print('resolution', t['resolution'], 'cells', len(s['cells']), 'frames', len(f['pieces']), len(f['genus']), 'located', all(0 <= c['between'][0] < c['between'][1] <= 1 for c in s['changes']) and all(c['frames'][1] - c['frames'][0] <= 0.25 + 1e-9 for c in f['changes']))")
+expect_in "manifest maps the topology" "$line" "resolution 32 cells 25 frames 48 48 located True"
 # The ghost (Meta5D projected along its path) at the resolution asked, a mesh with triangles.
 line=$(/usr/bin/python3 -c "import json; g = [f for f in json.load(open('demo/manifest.json'))['files'] if f['kind'] == 'ghost'][0]; print('resolution', g['resolution'], 'tolerance', g['tolerance'], 'coordinates', ','.join(g['coordinates']), 'meshed', g['triangles'] > 1000)")
 expect_in "manifest lists the ghost" "$line" "resolution 24 tolerance 0.001 coordinates x4,x5 meshed True"

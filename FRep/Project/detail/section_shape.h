@@ -5,6 +5,7 @@
 
 #include "Compiler/model.h"
 #include "Eval/interval.h"
+#include "Mesh/mesh_topology.h"
 #include "Sample/grid.h"
 
 #include <string>
@@ -17,8 +18,7 @@ struct SectionShape
 {
   std::string error;
   double measure = 0.0;       ///< volume or area
-  std::size_t components = 0; ///< connected surface pieces (contour loops in 2-D)
-  long long genus = 0;        ///< 3-D: components - Euler characteristic / 2 (0 in 2-D)
+  mesh::ShapeTopology topology; ///< pieces, and (3-D) the genus
 };
 
 /// The section at `time` of the model's coordinate `time_coordinate` (1-based), over `grid`

@@ -5,7 +5,8 @@
 //   4. framing  (setup.cpp)    the box every picture frames: the solids' (Scene/framing.h);
 //   5. pictures (pictures.cpp) the spreadsheet, the shape alone, the path;
 //   6. frames   (frames.cpp)   the animation frames, resumable (fingerprint), and the ghost
-//               (ghost.cpp)    the union of every shape they show, when the mapping asks;
+//               (ghost.cpp)    the union of every shape they show, when the mapping asks,
+//               (topology.cpp) the map of the topology of the cells and frames, when it asks;
 //   7. media    (media.cpp)    the sound track and the movie;
 //   8. manifest (manifest.cpp) manifest.json.
 // The rendering phases share the Workers (workers.cpp: per-worker picture kits and mesher pools,
@@ -30,6 +31,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstddef>
@@ -109,6 +111,7 @@ struct Products
   bool movie = false;
   bool shape = false; ///< nothing varies (world and fixed coordinates only)
   bool ghost = false; ///< the mapping asks for it (animation.ghost) and something moves
+  bool topology = false; ///< the mapping asks for it (topology) and there are cells or frames
 };
 
 /// What `only` asks for among what the plan can make; a ProductionError when that is nothing.
@@ -128,6 +131,12 @@ struct Record
 {
   nlohmann::json files = nlohmann::json::array();
   std::vector<Stage> stages;
+  /// The spreadsheet as composed, and each cell picture's place in it (the topology map draws
+  /// over it); empty without a spreadsheet.
+  imaging::Image sheet;
+  std::vector<std::array<int, 4>> sheet_rects;
+  /// The manifest's "topology" (the map of the topology); null without one.
+  nlohmann::json topology;
 };
 
 /// When the products draw sections and the mapping gives no render.view_box: the framing of the
@@ -209,6 +218,11 @@ void draw_path(const Job& job, Workers& workers, Record& record);
 
 /// ghost.png: the union of every shape the animation shows (ghost.cpp).
 void render_ghost(const Job& job, Workers& workers, Record& record);
+
+/// The map of the topology (topology.cpp): the pieces and genus of every cell's and frame's
+/// section and where they change, into the record's topology, spreadsheet-topology.png (over
+/// the record's sheet) and topology.png (along the frames).
+void map_topology(const Job& job, Workers& workers, Record& record);
 
 /// Where the frames go: frames/frame_%05d.png under the output directory.
 struct FrameFiles

@@ -155,6 +155,37 @@ TEST(SpaceTime, TopologyEventsOfAnalyticFamiliesAreFoundAtTheAnalyticTime)
     std::string::npos);
 }
 
+// The bisection alone, on a family whose topology is known everywhere: one piece below 0.3,
+// two up to 0.7, then two pieces of genus 1. Both changes in the one step [0, 1] are found,
+// nearest first, each within the resolution of the analytic place, with the probes that
+// bisection costs; ends of the same shape give nothing.
+TEST(SpaceTime, TopologyChangesBetweenTwoEndsAreEachLocated)
+{
+  using frep::mesh::ShapeTopology;
+  int probes = 0;
+  const auto shape_at = [&](double u)
+  {
+    ++probes;
+    return u < 0.3 ? ShapeTopology{ 1, 0 } : u < 0.7 ? ShapeTopology{ 2, 0 } : ShapeTopology{ 2, 1 };
+  };
+  const double resolution = 1.0 / 1024;
+  const auto events = frep::project::locate_topology_changes(
+    0.0, shape_at(0.0), 1.0, shape_at(1.0), resolution, shape_at);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_LE(events[0].before, 0.3);
+  EXPECT_GT(events[0].after, 0.3);
+  EXPECT_LE(events[0].after - events[0].before, resolution);
+  EXPECT_EQ(events[0].components_before, 1u);
+  EXPECT_EQ(events[0].components_after, 2u);
+  EXPECT_LE(events[1].before, 0.7);
+  EXPECT_GT(events[1].after, 0.7);
+  EXPECT_EQ(events[1].genus_before, 0);
+  EXPECT_EQ(events[1].genus_after, 1);
+  EXPECT_LE(probes, 2 + 2 * 11);
+  EXPECT_TRUE(frep::project::locate_topology_changes(
+    0.0, shape_at(0.0), 0.2, shape_at(0.2), resolution, shape_at).empty());
+}
+
 TEST(SpaceTime, BadRequestsGetClearErrors)
 {
   const auto left = model_of(kLeft);

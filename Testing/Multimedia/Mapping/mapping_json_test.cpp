@@ -212,6 +212,26 @@ TEST(MappingJson, GhostSettingsAreChecked)
   EXPECT_EQ(defaults.spec.animation.ghost, GhostSettings{});
 }
 
+// The map of the topology's settings: checked with their place, defaults, and written back.
+TEST(MappingJson, TopologySettingsAreChecked)
+{
+  const auto with = [](const std::string& topology)
+  {
+    const std::string text(example_mapping);
+    return load_mapping(text.substr(0, text.rfind('}')) + ", \"topology\": " + topology + " }");
+  };
+  const LoadResult r = with(R"({ "resolution": 1, "bisections": 30, "steps": 2 })");
+  EXPECT_TRUE(has_error(r, "topology.resolution", "must be from 2 to 8192")) << format_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "topology.bisections", "must be from 0 to 20")) << format_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "topology.steps", "unknown key")) << format_errors(r.errors);
+  const LoadResult good = with(R"({ "resolution": 40 })");
+  ASSERT_TRUE(good.ok()) << format_errors(good.errors);
+  ASSERT_TRUE(good.spec.topology.has_value());
+  EXPECT_EQ(good.spec.topology->resolution, 40);
+  EXPECT_EQ(good.spec.topology->bisections, 4);
+  EXPECT_EQ(load_mapping(save_mapping(good.spec)).spec, good.spec);
+}
+
 TEST(MappingJson, UnknownKeysAreErrors)
 {
   LoadResult r = load_mapping(replaced(example_mapping, "\"fps\": 24", "\"fsp\": 24"));

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -296,6 +297,114 @@ moved(x[5], a[1]) { moved = 0.25 - ((x[1] - x[4])^2 + (x[2] - x[5])^2 + x[3]^2);
   EXPECT_GT(ball, 100u);
   EXPECT_GT(l, 2 * ball);
   EXPECT_LT(l, 4 * ball);
+}
+
+// The map of the topology (topology): two balls of radius 0.45 whose centres x1 = +-c part as
+// c = 0.3 + 0.4 x4 passes 0.45, at x4 = 0.375 (the grid has a point at the origin, where they
+// meet); five cells of x4 from 0 to 1: one piece up to 0.25, two from 0.5, the change between
+// those cells located within 1/64 of their step, and the spreadsheet drawn over.
+TEST(Production, TheTopologyMapLocatesWhereTwoBallsPart)
+{
+  const char* balls = R"(
+balls(x[4], a[1])
+{
+  c = 0.3 + 0.4 * x[4];
+  balls = max(0.2025 - ((x[1] - c)^2 + x[2]^2 + x[3]^2), 0.2025 - ((x[1] + c)^2 + x[2]^2 + x[3]^2));
+}
+)";
+  ProductionInputs in = inputs(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2, 2] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2, 2] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-2, 2] }],
+    "x4": [{ "type": "spreadsheet", "axis": "columns", "range": [0, 1], "step": 0.25 }] },
+  "topology": { "resolution": 49, "bisections": 6 },
+  "world": { "resolution": 16 },
+  "spreadsheet": { "cell_size": 48 } })",
+    balls);
+  ProductionOptions run;
+  run.directory = fresh("topology_cells");
+  run.threads = 2;
+  const ProductionReport report = frep::mapping::produce(in, run);
+  ASSERT_TRUE(report.ok()) << why(report);
+  EXPECT_TRUE(fs::exists(run.directory / "spreadsheet-topology.png"));
+  EXPECT_FALSE(fs::exists(run.directory / "topology.png")); // no frames
+  EXPECT_TRUE(temporaries(run.directory).empty());
+  const nlohmann::json manifest = nlohmann::json::parse(report.manifest);
+  const nlohmann::json& sheet = manifest["topology"]["spreadsheet"];
+  ASSERT_EQ(sheet["cells"].size(), 5u) << report.manifest;
+  const std::vector<int> pieces{ 1, 1, 2, 2, 2 };
+  for (std::size_t i = 0; i < 5; ++i)
+  {
+    EXPECT_EQ(sheet["cells"][i]["pieces"], pieces[i]) << i;
+    EXPECT_EQ(sheet["cells"][i]["genus"], 0) << i;
+  }
+  ASSERT_EQ(sheet["changes"].size(), 1u) << report.manifest;
+  const nlohmann::json& change = sheet["changes"][0];
+  EXPECT_EQ(change["cells"], nlohmann::json({ { 1, -1, -1 }, { 2, -1, -1 } })); // as the spreadsheet entry
+  EXPECT_EQ(change["before"]["pieces"], 1);
+  EXPECT_EQ(change["after"]["pieces"], 2);
+  const double lo = change["values"]["x4"][0], hi = change["values"]["x4"][1];
+  EXPECT_LE(lo, 0.375);
+  EXPECT_GE(hi, 0.375);
+  EXPECT_NEAR(hi - lo, 0.25 / 64, 1e-12);
+  bool listed = false;
+  for (const nlohmann::json& f : manifest["files"])
+    listed = listed || f["file"] == "spreadsheet-topology.png";
+  EXPECT_TRUE(listed) << report.manifest;
+}
+
+// Along the animation: a torus (R = 1) whose tube radius 0.7 + 0.8 x4 reaches R at x4 = 0.375
+// closes its hole there (genus 1 -> 0, one piece throughout); x4 runs over the frames. The
+// change is between the frames either side of it, its x4 interval holds 0.375, topology.png is
+// written, and --only topology makes the map alone (no frames).
+TEST(Production, TheTopologyMapFollowsTheAnimation)
+{
+  const char* torus = R"(
+torus(x[4], a[1])
+{
+  r = 0.7 + 0.8 * x[4];
+  torus = r^2 - ((sqrt(x[1]^2 + x[2]^2) - 1)^2 + x[3]^2);
+}
+)";
+  ProductionInputs in = inputs(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-3, 3] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-3, 3] }],
+    "x3": [{ "type": "world", "axis": "z", "range": [-3, 3] }],
+    "x4": [{ "type": "dynamic", "range": [0, 1] }] },
+  "animation": { "duration": 6, "fps": 1 },
+  "topology": { "resolution": 61, "bisections": 5 },
+  "world": { "resolution": 16 },
+  "render": { "width": 64, "height": 48 } })",
+    torus);
+  ProductionOptions run;
+  run.directory = fresh("topology_frames");
+  run.threads = 2;
+  run.only = { "topology" };
+  const ProductionReport report = frep::mapping::produce(in, run);
+  ASSERT_TRUE(report.ok()) << why(report);
+  EXPECT_TRUE(fs::exists(run.directory / "topology.png"));
+  EXPECT_FALSE(fs::exists(run.directory / "frames"));
+  const nlohmann::json manifest = nlohmann::json::parse(report.manifest);
+  const nlohmann::json& frames = manifest["topology"]["frames"];
+  const std::size_t n = frames["pieces"].size();
+  ASSERT_GE(n, 3u) << report.manifest;
+  ASSERT_EQ(frames["genus"].size(), n);
+  EXPECT_EQ(frames["genus"][0], 1);
+  EXPECT_EQ(frames["genus"][n - 1], 0);
+  for (std::size_t k = 0; k < n; ++k)
+    EXPECT_EQ(frames["pieces"][k], 1) << k;
+  ASSERT_EQ(frames["changes"].size(), 1u) << report.manifest;
+  const nlohmann::json& change = frames["changes"][0];
+  EXPECT_EQ(change["before"]["genus"], 1);
+  EXPECT_EQ(change["after"]["genus"], 0);
+  const double lo = change["values"]["x4"][0], hi = change["values"]["x4"][1];
+  EXPECT_LE(lo, 0.375);
+  EXPECT_GE(hi, 0.375);
+  const double frame_lo = change["frames"][0], frame_hi = change["frames"][1];
+  EXPECT_LT(frame_lo, frame_hi);
+  EXPECT_EQ(std::floor(frame_lo), std::floor(frame_hi - 1e-9)); // within one step
 }
 
 TEST(Production, FramesAreKeptOnlyForTheSameInputs)

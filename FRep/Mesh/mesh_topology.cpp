@@ -33,22 +33,43 @@ struct Components
   void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
-// The pieces of a contour: its segments joined by shared points.
-std::size_t contour_loops(const Surface& contour)
+// The loops of a contour (its segments joined by shared points) and the area each encloses
+// (shoelace; the inside on the left of the segments).
+std::vector<double> contour_loop_areas(const Surface& contour)
 {
   Components components(contour.point_count());
-  std::vector<unsigned char> used(contour.point_count(), 0);
   for (std::size_t c = 0; c + 1 < contour.cells.size(); c += 2)
   {
-    used[contour.cells[c]] = used[contour.cells[c + 1]] = 1;
     components.join(contour.cells[c], contour.cells[c + 1]);
   }
-  std::size_t pieces = 0;
-  for (std::uint32_t p = 0; p < used.size(); ++p)
+  std::vector<double> twice(contour.point_count(), 0.0);
+  std::vector<unsigned char> root(contour.point_count(), 0);
+  for (std::size_t c = 0; c + 1 < contour.cells.size(); c += 2)
   {
-    pieces += used[p] && components.find(p) == p ? 1 : 0;
+    const double* p = &contour.points[3 * contour.cells[c]];
+    const double* q = &contour.points[3 * contour.cells[c + 1]];
+    const std::uint32_t r = components.find(contour.cells[c]);
+    twice[r] += p[0] * q[1] - q[0] * p[1];
+    root[r] = 1;
   }
-  return pieces;
+  std::vector<double> areas;
+  for (std::uint32_t p = 0; p < root.size(); ++p)
+  {
+    if (root[p])
+      areas.push_back(0.5 * twice[p]);
+  }
+  return areas;
+}
+
+std::size_t count_slivers(const std::vector<double>& measures)
+{
+  double largest = 0.0;
+  for (const double m : measures)
+    largest = std::max(largest, std::abs(m));
+  std::size_t slivers = 0;
+  for (const double m : measures)
+    slivers += std::abs(m) < sliver_fraction * largest ? 1 : 0;
+  return slivers;
 }
 
 } // namespace
@@ -57,10 +78,11 @@ ShapeTopology shape_topology(const Surface& surface)
 {
   if (surface.dimension != 3)
   {
-    return { contour_loops(surface), 0 };
+    const std::vector<double> areas = contour_loop_areas(surface);
+    return { areas.size(), 0, count_slivers(areas) };
   }
   const MeshTopology t = analyse_topology(surface);
-  return { t.components, t.genus() };
+  return { t.components, t.genus(), count_slivers(t.component_volumes) };
 }
 
 MeshTopology analyse_topology(const Surface& surface)
@@ -79,6 +101,7 @@ MeshTopology analyse_topology(const Surface& surface)
   half.reserve(cells.size());
   std::vector<unsigned char> used(surface.point_count(), 0);
   Components components(surface.point_count());
+  std::vector<double> tet(t.triangles); // the signed volume of (origin, triangle)
   for (std::size_t f = 0; f < t.triangles; ++f)
   {
     const std::array<std::uint32_t, 3> v{ cells[3 * f], cells[3 * f + 1], cells[3 * f + 2] };
@@ -103,8 +126,9 @@ MeshTopology analyse_topology(const Surface& surface)
     const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
       u[0] * w[1] - u[1] * w[0] };
     t.area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    t.signed_volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                         a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+    tet[f] = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+    t.signed_volume += tet[f];
   }
   std::sort(half.begin(), half.end(),
     [](const HalfEdge& p, const HalfEdge& q)
@@ -144,6 +168,17 @@ MeshTopology analyse_topology(const Surface& surface)
   }
   t.euler_characteristic =
     static_cast<long long>(t.points) - static_cast<long long>(t.edges) + static_cast<long long>(t.triangles);
+  // Each component's volume: its triangles' tetrahedra, summed at the component's root.
+  std::vector<double> volume(surface.point_count(), 0.0);
+  for (std::size_t f = 0; f < t.triangles; ++f)
+  {
+    volume[components.find(cells[3 * f])] += tet[f];
+  }
+  for (std::uint32_t p = 0; p < used.size(); ++p)
+  {
+    if (used[p] && components.find(p) == p)
+      t.component_volumes.push_back(volume[p]);
+  }
   return t;
 }
 

@@ -5,6 +5,7 @@
 #include "Mesh/surface.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace frep::mesh
 {
@@ -22,6 +23,9 @@ struct MeshTopology
   long long euler_characteristic = 0; ///< V - E + F
   double signed_volume = 0;        ///< > 0 for a closed mesh oriented outward
   double area = 0;
+  /// Each component's signed volume (the same order as nothing else: one entry per component).
+  /// A cavity's shell, oriented inward, is negative.
+  std::vector<double> component_volumes;
 
   /// The genus summed over the pieces, for a closed mesh: each closed piece has Euler
   /// characteristic 2 - 2g.
@@ -46,9 +50,19 @@ struct ShapeTopology
   /// 3-D: the genus summed over the pieces (MeshTopology::genus); 0 in 2-D, where a hole is a
   /// loop of its own.
   long long genus = 0;
+  /// Pieces that enclose less than sliver_fraction of the largest piece's volume (area in 2-D):
+  /// specks beside the shape. Not compared: a piece that shrinks is no change of topology.
+  std::size_t slivers = 0;
 
-  friend bool operator==(const ShapeTopology&, const ShapeTopology&) = default;
+  /// The same pieces and genus.
+  friend bool operator==(const ShapeTopology& a, const ShapeTopology& b)
+  {
+    return a.components == b.components && a.genus == b.genus;
+  }
 };
+
+/// What counts as a sliver: under 1% of the largest piece.
+inline constexpr double sliver_fraction = 0.01;
 
 /// The pieces and genus of a surface (dimension 3: triangles) or contour (2: segments). The
 /// figures are exact for the closed, manifold meshes the mesher makes.

@@ -77,7 +77,8 @@ Track track(const Job& job, Workers& workers, const std::vector<Sample>& samples
   const double resolution = std::ldexp(1.0, -settings.bisections);
   workers.parallel(differ.size(), [&](std::size_t i, int)
     {
-      const auto [a, b] = differ[i];
+      // Named, not a structured binding: clang 14 (the sanitizer build) cannot capture those.
+      const std::size_t a = differ[i].first, b = differ[i].second;
       const auto at = [&](double u)
       { return section_topology(job, between(samples[a], samples[b], u), settings.resolution); };
       for (const project::TopologyEvent& e : project::locate_topology_changes(
@@ -113,7 +114,7 @@ std::vector<std::pair<std::size_t, std::size_t>> cell_pairs(const Plan& plan)
 
 nlohmann::json shape_json(const Shape& s)
 {
-  return { { "pieces", s.components }, { "genus", s.genus } };
+  return { { "pieces", s.components }, { "genus", s.genus }, { "slivers", s.slivers } };
 }
 
 // A change: where along the step (and so the values of the coordinates that move), before and
@@ -132,8 +133,8 @@ nlohmann::json change_json(const Job& job, const std::vector<Sample>& samples, c
       values[job.coordinates.names[i]] = { lo.values[i], hi.values[i] };
   }
   nlohmann::json j{ { "values", values },
-    { "before", shape_json({ e.components_before, e.genus_before }) },
-    { "after", shape_json({ e.components_after, e.genus_after }) } };
+    { "before", { { "pieces", e.components_before }, { "genus", e.genus_before } } },
+    { "after", { { "pieces", e.components_after }, { "genus", e.genus_after } } } };
   if (frames)
   {
     j["frames"] = { static_cast<double>(c.from) + e.before, static_cast<double>(c.from) + e.after };
@@ -156,14 +157,17 @@ nlohmann::json track_json(const Job& job, const std::vector<Sample>& samples, co
     changes.push_back(change_json(job, samples, c, frames));
   if (frames)
   {
-    nlohmann::json pieces = nlohmann::json::array(), genus = nlohmann::json::array();
+    nlohmann::json pieces = nlohmann::json::array(), genus = nlohmann::json::array(),
+                   slivers = nlohmann::json::array();
     for (const Shape& s : t.shapes)
     {
       pieces.push_back(s.components);
       genus.push_back(s.genus);
+      slivers.push_back(s.slivers);
     }
     j["pieces"] = pieces;
     j["genus"] = genus;
+    j["slivers"] = slivers;
   }
   else
   {

@@ -11,9 +11,12 @@ namespace frep::mapping
 namespace
 {
 
+// "3 pieces (2 slivers), genus 1"
 std::string shape_text(const mesh::ShapeTopology& s)
 {
   std::string t = std::to_string(s.components) + (s.components == 1 ? " piece" : " pieces");
+  if (s.slivers > 0)
+    t += " (" + std::to_string(s.slivers) + (s.slivers == 1 ? " sliver)" : " slivers)");
   return s.genus != 0 ? t + ", genus " + std::to_string(s.genus) : t;
 }
 
@@ -92,7 +95,12 @@ imaging::Image topology_chart(const Plan& plan, const TopologyMap& t, PictureKit
     genus.steps.push_back({ x, double(c.event.genus_after) });
     chart.marks.push_back(x);
   }
-  chart.series = { pieces, genus };
+  // Slivers are counted per frame (a piece that shrinks is no event): steps at the frames.
+  render::StepSeries solids{ "pieces but slivers", {}, imaging::srgb_hex(0x2a9d8f) };
+  for (std::size_t k = 0; k < t.shapes.size() && k < plan.frames.size(); ++k)
+    solids.steps.push_back(
+      { plan.frames[k].time, double(t.shapes[k].components - t.shapes[k].slivers) });
+  chart.series = { pieces, genus, solids };
   return render::draw_step_chart(chart, 900, 360, kit->font ? &*kit->font : nullptr);
 }
 

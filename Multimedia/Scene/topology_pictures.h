@@ -34,7 +34,7 @@ struct TopologyMap
 };
 
 /// The composed spreadsheet (`rects`: each cell picture's place, compose_spreadsheet's) with
-/// each cell's pieces and genus in its top-left corner (with a font), the two cells of every
+/// each cell's pieces, slivers and genus in its top-left corner (with a font), the two cells of every
 /// change outlined in red and the gap between them barred when they are side by side or one
 /// above the other.
 imaging::Image topology_sheet(const imaging::Image& sheet,
@@ -43,7 +43,7 @@ imaging::Image topology_sheet(const imaging::Image& sheet,
   PictureKit* kit);
 
 /// The pieces and genus along the animation's time (900 x 360 pixels): steps at the located
-/// changes (their middles), each change marked.
+/// changes (their middles), each change marked; and the pieces but the slivers, frame by frame.
 imaging::Image topology_chart(const Plan& plan, const TopologyMap& frames, PictureKit* kit);
 
 } // namespace frep::mapping

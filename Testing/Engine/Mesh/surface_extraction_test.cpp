@@ -138,6 +138,46 @@ TEST(SurfaceExtraction, TorusHasEulerCharacteristicZero)
   EXPECT_NEAR(t.signed_volume, volume, 0.01 * volume);
 }
 
+// shape_topology: a ball of radius 4 and one of radius 0.6 beside it (0.34% of its volume) are
+// two pieces, one a sliver; two balls of radius 4 none. Each piece's volume is its own (the
+// volumes sum to the mesh's), and in 2-D the loops' areas decide alike.
+TEST(SurfaceExtraction, ShapeTopologyCountsPiecesGenusAndSlivers)
+{
+  const auto pair = [](double small)
+  {
+    return "my_model(x[3], a[1]) { s1 = 16 - (x[1]-3)^2 - x[2]^2 - x[3]^2;"
+           " s2 = " + std::to_string(small * small) + " - (x[1]+5)^2 - x[2]^2 - x[3]^2;"
+           " my_model = max(s1, s2); }";
+  };
+  const ExtractResult speck = extract_surface(compile(pair(0.6).c_str()), cube_grid(8, 97));
+  ASSERT_TRUE(speck.ok()) << speck.error;
+  const frep::mesh::ShapeTopology s = frep::mesh::shape_topology(speck.surface);
+  EXPECT_EQ(s.components, 2u);
+  EXPECT_EQ(s.genus, 0);
+  EXPECT_EQ(s.slivers, 1u);
+  const MeshTopology t = analyse_topology(speck.surface);
+  ASSERT_EQ(t.component_volumes.size(), 2u);
+  const auto [lo, hi] = std::minmax(t.component_volumes[0], t.component_volumes[1]);
+  EXPECT_NEAR(hi, 4.0 / 3 * std::numbers::pi * 64, 0.02 * hi);
+  EXPECT_NEAR(lo, 4.0 / 3 * std::numbers::pi * 0.216, 0.2 * lo);
+  EXPECT_NEAR(lo + hi, t.signed_volume, 1e-9 * hi);
+  // Equal pieces: no sliver; and the comparison ignores slivers (a piece that shrinks is no
+  // change of topology).
+  const ExtractResult twins = extract_surface(compile(pair(2.0).c_str()), cube_grid(8, 97));
+  const frep::mesh::ShapeTopology u = frep::mesh::shape_topology(twins.surface);
+  EXPECT_EQ(u.components, 2u);
+  EXPECT_EQ(u.slivers, 0u);
+  EXPECT_TRUE(s == u);
+  // 2-D: a disc of radius 4 and one of radius 0.3 (0.56% of its area).
+  const auto discs = compile("my_model(x[2], a[1]) { d1 = 16 - (x[1]-3)^2 - x[2]^2;"
+                             " d2 = 0.09 - (x[1]+5)^2 - x[2]^2; my_model = max(d1, d2); }");
+  const ExtractResult contour = extract_contour(discs, cube_grid(8, 321, 2));
+  ASSERT_TRUE(contour.ok()) << contour.error;
+  const frep::mesh::ShapeTopology c = frep::mesh::shape_topology(contour.surface);
+  EXPECT_EQ(c.components, 2u);
+  EXPECT_EQ(c.slivers, 1u);
+}
+
 TEST(SurfaceExtraction, DisjointPartsAreSeparateComponents)
 {
   const auto tape = compile("my_model(x[3], a[1]) {"

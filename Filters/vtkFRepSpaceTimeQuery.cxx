@@ -92,16 +92,25 @@ int vtkFRepSpaceTimeQuery::FillInputPortInformation(int port, vtkInformation* in
 }
 
 //------------------------------------------------------------------------------
-std::string vtkFRepSpaceTimeQuery::Volume(vtkFRepObject* object, vtkTable* table)
+std::string vtkFRepSpaceTimeQuery::SpaceIsFree(vtkFRepObject* object, const char* query)
 {
-  const int n = object->GetModelDimension();
-  for (int c = 0; c < n; ++c)
+  for (int c = 0; c < object->GetModelDimension(); ++c)
   {
     if (c != this->TimeCoordinate && object->IsCoordinateFixed(c))
     {
-      return object->GetCoordinateName(c) +
-        " is fixed by the input: VOLUME needs every coordinate of space free";
+      return object->GetCoordinateName(c) + " is fixed by the input: " + query +
+        " needs every coordinate of space free";
     }
+  }
+  return {};
+}
+
+//------------------------------------------------------------------------------
+std::string vtkFRepSpaceTimeQuery::Volume(vtkFRepObject* object, vtkTable* table)
+{
+  if (std::string fixed = this->SpaceIsFree(object, "VOLUME"); !fixed.empty())
+  {
+    return fixed;
   }
   if (this->Steps < 1 || this->Samples < 2)
   {
@@ -203,6 +212,41 @@ std::string vtkFRepSpaceTimeQuery::Contact(vtkFRepObject* a, vtkFRepObject* b, v
 }
 
 //------------------------------------------------------------------------------
+std::string vtkFRepSpaceTimeQuery::Topology(vtkFRepObject* object, vtkTable* table)
+{
+  if (std::string fixed = this->SpaceIsFree(object, "TOPOLOGY"); !fixed.empty())
+  {
+    return fixed;
+  }
+  const frep::project::TopologyTrack track = frep::project::topology_events(*object->GetModel(),
+    { this->TimeCoordinate + 1, this->TimeRange[0], this->TimeRange[1] },
+    SpaceBox(object, this->TimeCoordinate), this->Steps, this->Samples, this->TimeTolerance,
+    Options(object, this->TimeTolerance));
+  if (!track.ok())
+  {
+    return track.error;
+  }
+  vtkDoubleArray* columns[6];
+  const char* names[6] = { "before", "after", "pieces_before", "pieces_after", "genus_before",
+    "genus_after" };
+  for (int k = 0; k < 6; ++k)
+  {
+    columns[k] = AddColumn(table, names[k]);
+  }
+  for (const frep::project::TopologyEvent& e : track.events)
+  {
+    const double row[6] = { e.before, e.after, double(e.components_before),
+      double(e.components_after), double(e.genus_before), double(e.genus_after) };
+    for (int k = 0; k < 6; ++k)
+    {
+      columns[k]->InsertNextValue(row[k]);
+    }
+  }
+  this->UpdateProgress(1.0);
+  return {};
+}
+
+//------------------------------------------------------------------------------
 int vtkFRepSpaceTimeQuery::RequestData(vtkInformation*,
   vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
@@ -226,6 +270,8 @@ int vtkFRepSpaceTimeQuery::RequestData(vtkInformation*,
     problem = this->Volume(first, output);
   else if (this->Query == PRESENCE)
     problem = this->Presence(first, output);
+  else if (this->Query == TOPOLOGY)
+    problem = this->Topology(first, output);
   else
     problem = this->Contact(first, second, output);
   if (!problem.empty())
@@ -240,7 +286,7 @@ int vtkFRepSpaceTimeQuery::RequestData(vtkInformation*,
 void vtkFRepSpaceTimeQuery::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const names[] = { "VOLUME", "PRESENCE", "CONTACT" };
+  static const char* const names[] = { "VOLUME", "PRESENCE", "CONTACT", "TOPOLOGY" };
   os << indent << "Query: " << names[this->Query] << "\n";
   os << indent << "TimeCoordinate: " << this->TimeCoordinate << "\n";
   os << indent << "TimeRange: " << this->TimeRange[0] << " " << this->TimeRange[1] << "\n";

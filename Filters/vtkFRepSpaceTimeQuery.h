@@ -1,7 +1,8 @@
 /**
  * @class   vtkFRepSpaceTimeQuery
  * @brief   asks a moving solid (an n-D FRep object with a time coordinate) a question: its
- * section's volume over time, when a point is inside, or when two moving solids first touch
+ * section's volume over time, when a point is inside, when two moving solids first touch, or
+ * when the section's topology changes
  *
  * vtkFRepSpaceTimeQuery takes one vtkFRepObject (two for CONTACT: the second on port 1) whose
  * model coordinate TimeCoordinate is time, and answers with a vtkTable (frep::project's queries,
@@ -18,19 +19,26 @@
  *   a point of the box of port 0's intervals. One row: "found" (1 or 0), "time", "time_lo" (no
  *   contact starts before it), and the point, one column per model coordinate named as the
  *   object names it (time included); NaN where there is none.
+ * - TOPOLOGY: where along TimeRange the section's pieces or genus change: sampled at Steps
+ *   times (both ends), each change between two samples located by bisection to TimeTolerance
+ *   (frep::project::topology_events; the section meshed as for VOLUME). One row per change, in
+ *   time order: "before", "after" (the change lies between these times), "pieces_before",
+ *   "pieces_after", "genus_before", "genus_after"; no row when the topology never changes
+ *   (between the samples' probes: a change undone within one step is not seen).
  *
  * The questions are asked of the objects' whole models with their parameters: the coordinates
  * of space are the model's other coordinates over the object's intervals. A coordinate the object
  * fixes keeps its value (a degenerate interval for CONTACT, the point's value for PRESENCE);
- * VOLUME needs every coordinate of space free (2 or 3 of them).
+ * VOLUME and TOPOLOGY need every coordinate of space free (2 or 3 of them).
  *
  * ERRORS (one vtkErrorMacro when the filter executes; the table is then empty and the filter
  * still returns success): no object, a time coordinate the model lacks or that the object fixes,
- * a range that is not finite lo <= hi, TimeTolerance <= 0, Steps < 1, Samples < 2, two objects of
+ * a range that is not finite lo <= hi, TimeTolerance <= 0, Steps < 1 (TOPOLOGY: < 2), Samples < 2, two objects of
  * different dimensions, no second object for CONTACT, and the engine's own refusals.
  *
  * PROGRESS: VOLUME reports after each time and stops at CheckAbort; the others are single
- * searches (CONTACT is bounded by its box budget, PRESENCE by TimeTolerance).
+ * searches (CONTACT is bounded by its box budget, PRESENCE by TimeTolerance, TOPOLOGY by Steps
+ * meshes and about log2(step / TimeTolerance) more per change).
  *
  * @sa vtkFRepProjection vtkFRepObject
  */
@@ -56,18 +64,20 @@ public:
   {
     VOLUME = 0,
     PRESENCE = 1,
-    CONTACT = 2
+    CONTACT = 2,
+    TOPOLOGY = 3
   };
 
   ///@{
   /**
    * The question asked (default VOLUME).
    */
-  vtkSetClampMacro(Query, int, VOLUME, CONTACT);
+  vtkSetClampMacro(Query, int, VOLUME, TOPOLOGY);
   vtkGetMacro(Query, int);
   void SetQueryToVolume() { this->SetQuery(VOLUME); }
   void SetQueryToPresence() { this->SetQuery(PRESENCE); }
   void SetQueryToContact() { this->SetQuery(CONTACT); }
+  void SetQueryToTopology() { this->SetQuery(TOPOLOGY); }
   ///@}
 
   ///@{
@@ -88,7 +98,7 @@ public:
 
   ///@{
   /**
-   * How exactly a time is located by PRESENCE and CONTACT (default 1e-4, > 0).
+   * How exactly a time is located by PRESENCE, CONTACT and TOPOLOGY (default 1e-4, > 0).
    */
   vtkSetMacro(TimeTolerance, double);
   vtkGetMacro(TimeTolerance, double);
@@ -96,8 +106,8 @@ public:
 
   ///@{
   /**
-   * VOLUME: the number of times (default 11, >= 1) and the samples per axis of the section's
-   * mesh (default 48, >= 2).
+   * VOLUME and TOPOLOGY: the number of times (default 11, >= 1; TOPOLOGY >= 2) and the samples
+   * per axis of the section's mesh (default 48, >= 2).
    */
   vtkSetMacro(Steps, int);
   vtkGetMacro(Steps, int);
@@ -151,6 +161,9 @@ private:
   std::string Volume(vtkFRepObject* object, vtkTable* table);
   std::string Presence(vtkFRepObject* object, vtkTable* table);
   std::string Contact(vtkFRepObject* a, vtkFRepObject* b, vtkTable* table);
+  std::string Topology(vtkFRepObject* object, vtkTable* table);
+  // "" when every coordinate of space is free (VOLUME and TOPOLOGY mesh the whole section).
+  std::string SpaceIsFree(vtkFRepObject* object, const char* query);
 #endif
 };
 

@@ -12,7 +12,8 @@
   same points), its output's box the ball's swept along the path; a one-point path raises
   FRepError;
 - vtkFRepSpaceTimeQuery: the moving sphere's section volume at 3 times (the ball's, 2 %), when
-  the point (0, 0, 0) is inside (x4 in [0.25, 0.75]), as numpy arrays of its table's columns.
+  the point (0, 0, 0) is inside (x4 in [0.25, 0.75]), where two balls part (x4 = 0.375), as
+  numpy arrays of its table's columns.
 Exits 1 on any failed check."""
 
 import math
@@ -119,4 +120,24 @@ enter = vtk_to_numpy(query.GetOutput().GetColumnByName("enter"))
 leave = vtk_to_numpy(query.GetOutput().GetColumnByName("leave"))
 check(len(enter) == 1 and abs(enter[0] - 0.25) < 2e-4 and abs(leave[0] - 0.75) < 2e-4,
       "the origin is inside for x4 in [0.25, 0.75]: %s %s" % (enter, leave))
+
+# TOPOLOGY: two balls of radius 0.45 at x1 = +-(0.3 + 0.4 x4) part at x4 = 0.375 (the grid of 49
+# samples over [-2, 2] and [-1, 1] has a point at the origin, where they meet).
+parting = vtkHyperFunSource()
+parting.SetModelText("p(x[4], a[1]) { c = 0.3 + 0.4*x[4]; p = max(0.2025 - ((x[1] - c)^2 + x[2]^2 + x[3]^2),"
+                     " 0.2025 - ((x[1] + c)^2 + x[2]^2 + x[3]^2)); }")
+for axis, (lo, hi) in enumerate([(-2, 2), (-1, 1), (-1, 1)]):
+    parting.SetCoordinateRange(axis, lo, hi)
+query.SetInputConnection(parting.GetOutputPort())
+query.SetQueryToTopology()
+query.SetSteps(5)
+query.SetSamples(49)
+query.SetTimeTolerance(1e-3)
+frepkit.update(query)
+table = query.GetOutput()
+before = vtk_to_numpy(table.GetColumnByName("before"))
+after = vtk_to_numpy(table.GetColumnByName("after"))
+pieces = vtk_to_numpy(table.GetColumnByName("pieces_after"))
+check(len(before) == 1 and before[0] <= 0.375 <= after[0] and after[0] - before[0] <= 1e-3 and pieces[0] == 2,
+      "the balls part at x4 = 0.375: %s %s %s" % (before, after, pieces))
 finish()

@@ -2,8 +2,9 @@
 // has volume 4/3 pi r^3 at each time (2 % at 48 samples), one piece, genus 0. PRESENCE: the
 // point (0.6, 0, 0) is inside a sphere of radius 0.5 + 0.3 sin(2 pi t) while sin > 1/3, two
 // intervals of [0, 2]. CONTACT: spheres of radii 0.5 and 0.7 approaching at speeds 1 and 2 first
-// touch at t = 2.8 / 3, at x1 = -2 + 0.933333 + 0.5. Each bad request is one error and an empty
-// table; defaults, PrintSelf.
+// touch at t = 2.8 / 3, at x1 = -2 + 0.933333 + 0.5. TOPOLOGY: two balls of radius 0.45 at
+// x1 = +-(0.3 + 0.4 t) part at t = 0.375 (one row: 1 piece -> 2, within TimeTolerance). Each bad
+// request is one error and an empty table; defaults, PrintSelf.
 #include "FRepKitSourcesTestHelpers.h"
 
 #include "vtkFRepSpaceTimeQuery.h"
@@ -24,6 +25,9 @@ const char* Pulsing =
 // Radius 0.5 from x1 = -2 at speed 1; radius 0.7 from x1 = 2 at speed -2.
 const char* Left = "l(x[4], a[1]) { l = 0.25 - ((x[1] + 2 - x[4])^2 + x[2]^2 + x[3]^2); }";
 const char* Right = "r(x[4], a[1]) { r = 0.49 - ((x[1] - 2 + 2*x[4])^2 + x[2]^2 + x[3]^2); }";
+const char* Parting = "p(x[4], a[1]) { c = 0.3 + 0.4*x[4];"
+                      " p = max(0.2025 - ((x[1] - c)^2 + x[2]^2 + x[3]^2),"
+                      " 0.2025 - ((x[1] + c)^2 + x[2]^2 + x[3]^2)); }";
 
 double At(vtkTable* table, const char* column, int row)
 {
@@ -112,6 +116,36 @@ int TestFRepSpaceTimeQuery(int, char*[])
   FREPKIT_CHECK(failures, At(query->GetOutput(), "found", 0) == 0.0);
   FREPKIT_CHECK(failures, std::isnan(At(query->GetOutput(), "time", 0)));
 
+  // --- TOPOLOGY: the grid (49 samples over [-2, 2] and [-1, 1]) has a point at the origin,
+  // where the balls meet until c = 0.45.
+  vtkNew<vtkHyperFunSource> parting;
+  parting->SetModelText(Parting);
+  parting->SetCoordinateRange(0, -2, 2);
+  parting->SetCoordinateRange(1, -1, 1);
+  parting->SetCoordinateRange(2, -1, 1);
+  query->SetInputConnection(parting->GetOutputPort());
+  query->SetQueryToTopology();
+  query->SetTimeRange(0, 1);
+  query->SetSteps(5);
+  query->SetSamples(49);
+  query->SetTimeTolerance(1e-3);
+  events->Clear();
+  query->Update();
+  table = query->GetOutput();
+  FREPKIT_CHECK(failures, events->Errors == 0 && table->GetNumberOfRows() == 1);
+  FREPKIT_CHECK(failures, At(table, "before", 0) <= 0.375 && At(table, "after", 0) >= 0.375);
+  FREPKIT_CHECK(failures, At(table, "after", 0) - At(table, "before", 0) <= 1e-3);
+  FREPKIT_CHECK(failures, At(table, "pieces_before", 0) == 1.0 && At(table, "pieces_after", 0) == 2.0);
+  FREPKIT_CHECK(failures, At(table, "genus_before", 0) == 0.0 && At(table, "genus_after", 0) == 0.0);
+  query->SetTimeRange(0, 0.3); // one piece throughout: no row
+  query->Update();
+  FREPKIT_CHECK(failures, events->Errors == 0 && query->GetOutput()->GetNumberOfRows() == 0);
+  query->SetSteps(11);
+  query->SetSamples(48);
+  query->SetTimeTolerance(1e-4);
+  query->SetInputConnection(left->GetOutputPort());
+  query->SetQueryToContact();
+
   // --- bad requests: one error each, an empty table
   auto refused = [&](const char* expected)
   {
@@ -150,5 +184,10 @@ int TestFRepSpaceTimeQuery(int, char*[])
   query->Print(printed);
   FREPKIT_CHECK(failures, printed.str().find("Query: VOLUME") != std::string::npos);
   FREPKIT_CHECK(failures, printed.str().find("Samples: 1") != std::string::npos);
+  query->SetInputConnection(parting->GetOutputPort());
+  query->SetQueryToTopology();
+  query->SetSamples(33);
+  query->SetSteps(1);
+  FREPKIT_CHECK(failures, refused("at least two times"));
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -66,7 +66,10 @@ Track track(const Job& job, Workers& workers, const std::vector<Sample>& samples
   Track t;
   t.shapes.resize(samples.size());
   workers.parallel(samples.size(), [&](std::size_t i, int)
-    { t.shapes[i] = section_topology(job, samples[i], settings.resolution); });
+    {
+      t.shapes[i] = section_topology(job, samples[i], settings.resolution);
+      workers.advance();
+    });
   std::vector<std::pair<std::size_t, std::size_t>> differ;
   for (const auto& p : pairs)
   {
@@ -223,7 +226,6 @@ void map_topology(const Job& job, Workers& workers, Record& record)
                " frames (" + std::to_string(frames.changes.size()) + " changes)";
   }
   record.topology = topology;
-  workers.advance();
   record.stages.push_back({ "topology", seconds_since(t0),
     summary + " at " + std::to_string(settings.resolution) + "^3" });
 }

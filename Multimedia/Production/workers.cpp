@@ -88,7 +88,9 @@ Workers::Workers(const Job& job, const Products& products, int workers)
   total_units_ = (products.spreadsheet ? plan.cells.size() : 0) +
                  (products.frames ? plan.frames.size() : 0) +
                  (products.movie ? plan.frames.size() / 4.0 : 0) + (products.ghost ? 1.0 : 0.0) +
-                 (products.topology ? 1.0 : 0.0) + 1.0;
+                 // The topology map: a unit per cell and frame meshed (not its bisections).
+                 (products.topology ? double(plan.cells.size() + plan.frames.size()) : 0.0) +
+                 1.0;
 }
 
 Workers::Picture Workers::picture(RenderSettings::Method method,

@@ -183,7 +183,7 @@ public:
   /// stops the others and is rethrown.
   void parallel(std::size_t count, const std::function<void(std::size_t, int)>& body);
 
-  /// One work unit done (a cell or a frame).
+  /// One work unit done (a cell or a frame drawn, or meshed for the topology map).
   void advance();
   /// The progress at `units` work units done (the movie's progress, between whole units).
   void show_units(double units);

@@ -4,8 +4,8 @@
 // differ, the change is located by bisection of the step between them
 // (project::locate_topology_changes), the sections in between taken at values between theirs:
 // on the straight line between two cells' values, on the chord between two frames' (the path
-// itself between frames would need the path's time parametrisation; at the demo's 240 frames the
-// chord is within 1e-4 of it). The answers go into the manifest, over the spreadsheet
+// itself between frames would need the path's time parametrisation, which the plan does not
+// keep; the chord's distance from the path shrinks with the square of the frames' spacing). The answers go into the manifest, over the spreadsheet
 // (spreadsheet-topology.png) and along the animation (topology.png).
 #include "Production/detail/phases.h"
 

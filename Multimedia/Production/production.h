@@ -76,7 +76,7 @@ struct ProductionOptions : RunControl
 /// One stage of the run: its line in a summary and its entry in the manifest's "seconds".
 struct ProductionStage
 {
-  std::string name; ///< "framing", "spreadsheet", "shape", "path", "frames", "audio", "movie"
+  std::string name; ///< "framing", "spreadsheet", "shape", "path", "frames", "ghost", "topology", "audio", "movie"
   double seconds = 0;
   std::string detail; ///< "25 cells, 1000x1000; worker time: ..."
 };

@@ -187,6 +187,11 @@ nlohmann::json track_json(const Job& job, const std::vector<Sample>& samples, co
   return j;
 }
 
+std::string changes_text(const Track& t)
+{
+  return std::to_string(t.changes.size()) + (t.changes.size() == 1 ? " change" : " changes");
+}
+
 } // namespace
 
 void map_topology(const Job& job, Workers& workers, Record& record)
@@ -201,8 +206,7 @@ void map_topology(const Job& job, Workers& workers, Record& record)
   {
     const Track cells = track(job, workers, plan.cells, cell_pairs(plan), settings);
     topology["spreadsheet"] = track_json(job, plan.cells, cells, false);
-    summary = std::to_string(plan.cells.size()) + " cells (" +
-              std::to_string(cells.changes.size()) + " changes)";
+    summary = std::to_string(plan.cells.size()) + " cells (" + changes_text(cells) + ")";
     if (!record.sheet.empty())
     {
       write_png_file(job.options.directory / "spreadsheet-topology.png",
@@ -223,11 +227,12 @@ void map_topology(const Job& job, Workers& workers, Record& record)
     record.files.push_back({ { "file", "topology.png" }, { "kind", "topology" },
       { "width", chart.width }, { "height", chart.height } });
     summary += (summary.empty() ? "" : ", ") + std::to_string(plan.frames.size()) +
-               " frames (" + std::to_string(frames.changes.size()) + " changes)";
+               " frames (" + changes_text(frames) + ")";
   }
   record.topology = topology;
+  const bool solid = plan.world_coordinates[2] >= 0; // else 2-D sections: contours
   record.stages.push_back({ "topology", seconds_since(t0),
-    summary + " at " + std::to_string(settings.resolution) + "^3" });
+    summary + " at " + std::to_string(settings.resolution) + (solid ? "^3" : "^2") });
 }
 
 } // namespace frep::mapping::production

@@ -354,6 +354,44 @@ balls(x[4], a[1])
   EXPECT_TRUE(listed) << report.manifest;
 }
 
+// 2-D sections (two world coordinates: contours) are mapped alike: two discs parting at
+// x3 = 0.375, their loops counted.
+TEST(Production, TheTopologyMapCountsTheLoopsOfContours)
+{
+  const char* discs = R"(
+discs(x[3], a[1])
+{
+  c = 0.3 + 0.4 * x[3];
+  discs = max(0.2025 - ((x[1] - c)^2 + x[2]^2), 0.2025 - ((x[1] + c)^2 + x[2]^2));
+}
+)";
+  ProductionInputs in = inputs(R"({
+  "coordinates": {
+    "x1": [{ "type": "world", "axis": "x", "range": [-2, 2] }],
+    "x2": [{ "type": "world", "axis": "y", "range": [-2, 2] }],
+    "x3": [{ "type": "spreadsheet", "axis": "columns", "range": [0, 1], "step": 0.25 }] },
+  "topology": { "resolution": 49, "bisections": 6 },
+  "spreadsheet": { "cell_size": 48 } })",
+    discs);
+  ProductionOptions run;
+  run.directory = fresh("topology_contours");
+  const ProductionReport report = frep::mapping::produce(in, run);
+  ASSERT_TRUE(report.ok()) << why(report);
+  const nlohmann::json sheet = nlohmann::json::parse(report.manifest)["topology"]["spreadsheet"];
+  ASSERT_EQ(sheet["cells"].size(), 5u);
+  const std::vector<int> loops{ 1, 1, 2, 2, 2 };
+  for (std::size_t i = 0; i < 5; ++i)
+    EXPECT_EQ(sheet["cells"][i]["pieces"], loops[i]) << i;
+  ASSERT_EQ(sheet["changes"].size(), 1u);
+  const double lo = sheet["changes"][0]["values"]["x3"][0], hi = sheet["changes"][0]["values"]["x3"][1];
+  EXPECT_LE(lo, 0.375);
+  EXPECT_GE(hi, 0.375);
+  bool stage = false;
+  for (const auto& s : report.stages)
+    stage = stage || (s.name == "topology" && s.detail.find("at 49^2") != std::string::npos);
+  EXPECT_TRUE(stage);
+}
+
 // Along the animation: a torus (R = 1) whose tube radius 0.7 + 0.8 x4 reaches R at x4 = 0.375
 // closes its hole there (genus 1 -> 0, one piece throughout); x4 runs over the frames. The
 // change is between the frames either side of it, its x4 interval holds 0.375, topology.png is

@@ -218,10 +218,21 @@ std::string vtkFRepSpaceTimeQuery::Topology(vtkFRepObject* object, vtkTable* tab
   {
     return fixed;
   }
+  frep::project::SpaceTimeOptions options = Options(object, this->TimeTolerance);
+  options.progress = [this](double done)
+  {
+    this->UpdateProgress(done);
+    return !this->CheckAbort();
+  };
   const frep::project::TopologyTrack track = frep::project::topology_events(*object->GetModel(),
     { this->TimeCoordinate + 1, this->TimeRange[0], this->TimeRange[1] },
     SpaceBox(object, this->TimeCoordinate), this->Steps, this->Samples, this->TimeTolerance,
-    Options(object, this->TimeTolerance));
+    options);
+  if (track.cancelled)
+  {
+    table->Initialize();
+    return {};
+  }
   if (!track.ok())
   {
     return track.error;
@@ -242,7 +253,6 @@ std::string vtkFRepSpaceTimeQuery::Topology(vtkFRepObject* object, vtkTable* tab
       columns[k]->InsertNextValue(row[k]);
     }
   }
-  this->UpdateProgress(1.0);
   return {};
 }
 

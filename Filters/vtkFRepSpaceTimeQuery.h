@@ -36,9 +36,9 @@
  * a range that is not finite lo <= hi, TimeTolerance <= 0, Steps < 1 (TOPOLOGY: < 2), Samples < 2, two objects of
  * different dimensions, no second object for CONTACT, and the engine's own refusals.
  *
- * PROGRESS: VOLUME reports after each time and stops at CheckAbort; the others are single
- * searches (CONTACT is bounded by its box budget, PRESENCE by TimeTolerance, TOPOLOGY by Steps
- * meshes and about log2(step / TimeTolerance) more per change).
+ * PROGRESS: VOLUME and TOPOLOGY report after each time and stop at CheckAbort (an empty
+ * table); CONTACT and PRESENCE are single searches (bounded by the box budget and
+ * TimeTolerance).
  *
  * @sa vtkFRepProjection vtkFRepObject
  */

@@ -152,7 +152,7 @@ CLI::App* add_demo_command(CLI::App& app, DemoOptions& o)
     ->add_option("--topology",
       o.topology,
       "resolution of the map of the topology (every cell's and frame's pieces and genus, where "
-      "they change; default: the mapping's 48), 0 for none")
+      "they change; default: the mapping's 96), 0 for none")
     ->check(CLI::Range(0, 1024) & !CLI::Range(1, 1));
   cmd
     ->add_option("--method",

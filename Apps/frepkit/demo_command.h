@@ -27,7 +27,7 @@ struct DemoOptions
   std::optional<int> frames;
   std::optional<int> resolution;
   std::optional<int> ghost; ///< the ghost's resolution (default: the mapping's 32), 0: none
-  std::optional<int> topology; ///< the topology map's resolution (the mapping's 48), 0: none
+  std::optional<int> topology; ///< the topology map's resolution (the mapping's 96), 0: none
   std::optional<std::string> method; ///< overrides the mapping's render.method (mesh | raycast)
   int mesh_grid = 256;               ///< grid of the key shapes' meshes
   std::string align = "size";        ///< Meta5D's keys aligned: none (the paper), centroid or size

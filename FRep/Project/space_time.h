@@ -17,6 +17,7 @@
 
 #include "Compiler/model.h"
 #include "Eval/interval.h"
+#include "Eval/run_control.h"
 #include "Mesh/mesh_topology.h"
 #include "Project/projection.h"
 
@@ -28,8 +29,10 @@
 namespace frep::project
 {
 
-/// Tolerances of the queries.
-struct SpaceTimeOptions
+/// Tolerances of the queries. The run control (RunControl, the one settings struct of long
+/// calls): topology_events reports progress after each sample (false stops it) and polls
+/// `cancel` between meshes; the other queries are single searches and ignore it.
+struct SpaceTimeOptions : RunControl
 {
   double time_tolerance = 1e-4; ///< (> 0) how exactly a time is located
   /// (>= 0) first contact: a box of the smallest size whose enclosure still reaches 0 counts as a
@@ -112,7 +115,8 @@ struct TopologyTrack
   std::string error;
   std::vector<TopologySample> samples; ///< at `steps` times, both ends included
   std::vector<TopologyEvent> events;   ///< in time order
-  bool ok() const { return error.empty(); }
+  bool cancelled = false;              ///< stopped by the run control: nothing is reported
+  bool ok() const { return error.empty() && !cancelled; }
 };
 
 /// Where the section's topology (pieces, and genus for 3-D sections) changes along time (issue

@@ -76,8 +76,19 @@ TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
   double previous_t = time.lo;
   Shape previous = shape_at(previous_t);
   track.samples.push_back({ previous_t, previous.components, previous.genus });
+  const auto stop = [&](int done)
+  {
+    return options.cancel_requested() ||
+      (options.progress && !options.progress(done / double(steps - 1)));
+  };
   for (int i = 1; i < steps && error.empty(); ++i)
   {
+    if (stop(i - 1))
+    {
+      track = {};
+      track.cancelled = true;
+      return track;
+    }
     const double t = time.lo + (time.hi - time.lo) * (i / double(steps - 1));
     const Shape now = shape_at(t);
     track.samples.push_back({ t, now.components, now.genus });
@@ -88,6 +99,8 @@ TopologyTrack topology_events(const Model& model, const CoordinateRange& time,
     previous = now;
   }
   track.error = error;
+  if (error.empty() && options.progress)
+    options.progress(1.0);
   return track;
 }
 

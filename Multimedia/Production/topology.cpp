@@ -23,8 +23,6 @@ namespace
 
 using Shape = mesh::ShapeTopology;
 
-using Change = TopologyChange;
-using Track = TopologyMap;
 
 // The sample a fraction u of the way from a to b: its values, time and path parameter between
 // theirs; everything else (transform, colour) a's, which the topology does not see.
@@ -60,10 +58,10 @@ Shape section_topology(const Job& job, const Sample& sample, int resolution)
 }
 
 // Each sample's topology, then each change between the pairs whose ends differ, on the workers.
-Track track(const Job& job, Workers& workers, const std::vector<Sample>& samples,
+TopologyMap track(const Job& job, Workers& workers, const std::vector<Sample>& samples,
   const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const TopologySettings& settings)
 {
-  Track t;
+  TopologyMap t;
   t.shapes.resize(samples.size());
   workers.parallel(samples.size(), [&](std::size_t i, int)
     {
@@ -76,7 +74,7 @@ Track track(const Job& job, Workers& workers, const std::vector<Sample>& samples
     if (!(t.shapes[p.first] == t.shapes[p.second]))
       differ.push_back(p);
   }
-  std::vector<std::vector<Change>> found(differ.size());
+  std::vector<std::vector<TopologyChange>> found(differ.size());
   const double resolution = std::ldexp(1.0, -settings.bisections);
   workers.parallel(differ.size(), [&](std::size_t i, int)
     {
@@ -122,7 +120,9 @@ nlohmann::json shape_json(const Shape& s)
 
 // A change: where along the step (and so the values of the coordinates that move), before and
 // after.
-nlohmann::json change_json(const Job& job, const std::vector<Sample>& samples, const Change& c,
+nlohmann::json change_json(const Job& job,
+  const std::vector<Sample>& samples,
+  const TopologyChange& c,
   bool frames)
 {
   const project::TopologyEvent& e = c.event;
@@ -151,12 +151,12 @@ nlohmann::json change_json(const Job& job, const std::vector<Sample>& samples, c
   return j;
 }
 
-nlohmann::json track_json(const Job& job, const std::vector<Sample>& samples, const Track& t,
+nlohmann::json track_json(const Job& job, const std::vector<Sample>& samples, const TopologyMap& t,
   bool frames)
 {
   nlohmann::json j = nlohmann::json::object();
   nlohmann::json changes = nlohmann::json::array();
-  for (const Change& c : t.changes)
+  for (const TopologyChange& c : t.changes)
     changes.push_back(change_json(job, samples, c, frames));
   if (frames)
   {
@@ -187,7 +187,7 @@ nlohmann::json track_json(const Job& job, const std::vector<Sample>& samples, co
   return j;
 }
 
-std::string changes_text(const Track& t)
+std::string changes_text(const TopologyMap& t)
 {
   return std::to_string(t.changes.size()) + (t.changes.size() == 1 ? " change" : " changes");
 }
@@ -204,7 +204,7 @@ void map_topology(const Job& job, Workers& workers, Record& record)
   std::string summary;
   if (!plan.cells.empty())
   {
-    const Track cells = track(job, workers, plan.cells, cell_pairs(plan), settings);
+    const TopologyMap cells = track(job, workers, plan.cells, cell_pairs(plan), settings);
     topology["spreadsheet"] = track_json(job, plan.cells, cells, false);
     summary = std::to_string(plan.cells.size()) + " cells (" + changes_text(cells) + ")";
     if (!record.sheet.empty())
@@ -220,7 +220,7 @@ void map_topology(const Job& job, Workers& workers, Record& record)
     std::vector<std::pair<std::size_t, std::size_t>> steps;
     for (std::size_t k = 0; k + 1 < plan.frames.size(); ++k)
       steps.push_back({ k, k + 1 });
-    const Track frames = track(job, workers, plan.frames, steps, settings);
+    const TopologyMap frames = track(job, workers, plan.frames, steps, settings);
     topology["frames"] = track_json(job, plan.frames, frames, true);
     const imaging::Image chart = topology_chart(plan, frames, workers.kit(0));
     write_png_file(job.options.directory / "topology.png", chart);

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -184,6 +185,28 @@ TEST(SpaceTime, TopologyChangesBetweenTwoEndsAreEachLocated)
   EXPECT_LE(probes, 2 + 2 * 11);
   EXPECT_TRUE(frep::project::locate_topology_changes(
     0.0, shape_at(0.0), 0.2, shape_at(0.2), resolution, shape_at).empty());
+}
+
+// topology_events under a run control: progress rises to 1; a progress that returns false stops
+// it with nothing reported.
+TEST(SpaceTime, TopologyEventsReportProgressAndStop)
+{
+  const auto parting = model_of("p(x[4], a[1]) { p = max(0.25 - ((x[1] - x[4])^2 + x[2]^2 + x[3]^2),"
+                                " 0.25 - ((x[1] + x[4])^2 + x[2]^2 + x[3]^2)); }");
+  const std::vector<Interval> box{ { -2, 2 }, { -1, 1 }, { -1, 1 } };
+  SpaceTimeOptions options;
+  std::vector<double> seen;
+  options.progress = [&](double f) { seen.push_back(f); return true; };
+  const auto done = frep::project::topology_events(*parting, { 4, 0, 1 }, box, 4, 33, 1e-2, options);
+  ASSERT_TRUE(done.ok()) << done.error;
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  options.progress = [](double) { return false; };
+  const auto stopped = frep::project::topology_events(*parting, { 4, 0, 1 }, box, 4, 33, 1e-2, options);
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_FALSE(stopped.ok());
+  EXPECT_TRUE(stopped.samples.empty() && stopped.events.empty());
 }
 
 TEST(SpaceTime, BadRequestsGetClearErrors)

@@ -30,8 +30,9 @@ namespace frep::project
 {
 
 /// Tolerances of the queries. The run control (RunControl, the one settings struct of long
-/// calls): topology_events reports progress after each sample (false stops it) and polls
-/// `cancel` between meshes; the other queries are single searches and ignore it.
+/// calls): topology_events reports progress after each sample and stops there when progress
+/// returns false or `cancel` asks (not within a change's bisection); the other queries are
+/// single searches and ignore it.
 struct SpaceTimeOptions : RunControl
 {
   double time_tolerance = 1e-4; ///< (> 0) how exactly a time is located
